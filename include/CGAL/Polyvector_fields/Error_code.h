@@ -1,0 +1,77 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_ERROR_CODE_H
+#define CGAL_POLYVECTOR_FIELDS_ERROR_CODE_H
+
+/// \file Error_code.h
+
+namespace CGAL {
+namespace Polyvector_fields {
+
+/// \ingroup PkgPolyvectorFieldsEnums
+///
+/// lists the reasons for which a function of this package can refuse its input
+/// or fail. Every function that returns an `Error_code` leaves its output
+/// property maps and files untouched unless it returns `Error_code::SUCCESS`.
+enum class Error_code
+{
+  SUCCESS = 0,                   ///< the function succeeded
+  EMPTY_MESH,                    ///< the mesh has no face
+  NON_TRIANGLE_FACE,             ///< a face of the mesh is not a triangle
+  DEGENERATE_FACE,               ///< a face has (numerically) zero area or a non-finite vertex coordinate
+  INVALID_DEGREE,                ///< the degree `N` is zero, or odd while sign symmetry is asked for
+  INVALID_FACE,                  ///< a constraint or a file names a face that is not in the mesh
+  DUPLICATE_CONSTRAINT,          ///< a face is constrained twice
+  EMPTY_CONSTRAINT,              ///< a constraint gives no vector
+  ZERO_CONSTRAINT_VECTOR,        ///< a constraint vector is zero, or vanishes once projected onto its face plane
+  NON_FINITE_VALUE,              ///< a value (coordinate, weight, parameter) is NaN or infinite
+  TOO_MANY_CONSTRAINT_VECTORS,   ///< a constraint gives more than `N` vectors (more than `N/2` with sign symmetry)
+  INVALID_WEIGHT,                ///< a soft-constraint weight is not strictly positive
+  INCONSISTENT_DEGREE,           ///< a file or a field holds a degree other than the one asked for
+  CANNOT_OPEN_FILE,              ///< a file cannot be opened for reading or writing
+  MALFORMED_FILE,                ///< a file does not follow its format
+  SOLVER_FAILURE,                ///< the sparse linear solver could not factor or solve the system
+  INVALID_PARAMETER,             ///< a numerical parameter is out of its documented range
+  NOT_A_FRAME_FIELD,             ///< a frame-field algorithm was called with `N != 4` or without sign symmetry
+  CURVATURE_ESTIMATION_FAILED    ///< the principal curvatures of a face could not be estimated
+};
+
+/// \ingroup PkgPolyvectorFieldsEnums
+///
+/// returns a one-line English message that describes `code`.
+inline const char* get_error_message(Error_code code)
+{
+  switch(code)
+  {
+    case Error_code::SUCCESS: return "success";
+    case Error_code::EMPTY_MESH: return "the mesh has no face";
+    case Error_code::NON_TRIANGLE_FACE: return "the mesh has a face that is not a triangle";
+    case Error_code::DEGENERATE_FACE: return "the mesh has a degenerate face (zero area or non-finite coordinates)";
+    case Error_code::INVALID_DEGREE: return "invalid degree: N must be at least 1, and even with sign symmetry";
+    case Error_code::INVALID_FACE: return "a constraint names a face that is not in the mesh";
+    case Error_code::DUPLICATE_CONSTRAINT: return "a face is constrained more than once";
+    case Error_code::EMPTY_CONSTRAINT: return "a constraint gives no vector";
+    case Error_code::ZERO_CONSTRAINT_VECTOR: return "a constraint vector is zero or normal to its face";
+    case Error_code::NON_FINITE_VALUE: return "a value is NaN or infinite";
+    case Error_code::TOO_MANY_CONSTRAINT_VECTORS: return "a constraint gives more vectors than the degree allows";
+    case Error_code::INVALID_WEIGHT: return "a soft-constraint weight is not strictly positive";
+    case Error_code::INCONSISTENT_DEGREE: return "the degree in the data differs from the degree asked for";
+    case Error_code::CANNOT_OPEN_FILE: return "a file cannot be opened";
+    case Error_code::MALFORMED_FILE: return "a file is malformed";
+    case Error_code::SOLVER_FAILURE: return "the sparse linear solver failed";
+    case Error_code::INVALID_PARAMETER: return "a parameter is out of its valid range";
+    case Error_code::NOT_A_FRAME_FIELD: return "the algorithm needs a sign-symmetric field of degree 4 (a frame field)";
+    case Error_code::CURVATURE_ESTIMATION_FAILED: return "the principal curvatures could not be estimated";
+  }
+  return "unknown error";
+}
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_ERROR_CODE_H

@@ -1,0 +1,327 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_POLYVECTOR_FIELD_DESIGNER_H
+#define CGAL_POLYVECTOR_FIELDS_POLYVECTOR_FIELD_DESIGNER_H
+
+/// \file Polyvector_field_designer.h
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Face_constraint.h>
+#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
+#include <CGAL/Polyvector_fields/internal/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Default.h>
+#include <CGAL/Kernel_traits.h>
+
+#include <chrono>
+#include <complex>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+
+/// \ingroup PkgPolyvectorFieldsDesign
+///
+/// times of the stages of the last `Polyvector_field_designer::solve()`, in seconds.
+struct Design_statistics
+{
+  double connection = 0;      ///< face frames and Levi-Civita connection (at construction)
+  double assembly = 0;        ///< assembly of the sparse matrices
+  double factorization = 0;   ///< symbolic analysis and numeric factorization
+  double solve = 0;           ///< triangular solves
+  bool factorization_reused = false;  ///< `true` when the previous factorization served again
+  std::size_t number_of_degrees_solved = 0;  ///< coefficient degrees that were not identically zero
+};
+
+/// \ingroup PkgPolyvectorFieldsDesign
+///
+/// designs smooth N-PolyVector fields on a triangle mesh from constraints
+/// (paper, Section 3.6), and keeps the factorization of its linear systems so
+/// that new constraint values on the same faces are solved for without
+/// factoring again.
+///
+/// The field minimises the smoothness energy of Eq. 6 (with the transport power
+/// `N - m` of NOTES §1) under the constraints:
+/// - a *hard full* constraint fixes all the coefficients of its face;
+/// - a *hard partial* constraint (fewer than `N` vectors) makes each given vector a root;
+/// - a *soft* constraint adds its weighted squared residual to the energy (see `Face_constraint`).
+///
+/// Each coefficient degree is solved on its own unless partial constraints couple
+/// them; degrees whose constraint values are all zero are skipped (they are zero).
+/// Boundary edges carry no term (natural boundary condition). Each connected
+/// component is solved on its own; a component without constraint receives the
+/// smoothest field of unit vectors: an N-RoSy field given by the smallest
+/// eigenvector of its connection Laplacian.
+///
+/// Computations are done in `double` and `std::complex<double>` whatever the kernel.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam Traits a model of `Kernel`; `CGAL::Default` means the kernel of the point type
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
+///         `CGAL::Default` means the internal point map of the mesh
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`;
+///         `CGAL::Default` means `Default_sparse_solver` (Eigen's `SimplicialLDLT`)
+template <typename TriangleMesh,
+          typename Traits = CGAL::Default,
+          typename VertexPointMap = CGAL::Default,
+          typename SolverTraits = CGAL::Default>
+class Polyvector_field_designer
+{
+public:
+  /// \name Types
+  /// @{
+  typedef typename CGAL::Default::Get<
+    VertexPointMap,
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
+  typedef typename CGAL::Default::Get<Traits, typename CGAL::Kernel_traits<Point_3>::Kernel>::type Geom_traits;
+  typedef typename CGAL::Default::Get<SolverTraits, Default_sparse_solver>::type Solver_traits;
+  typedef typename Geom_traits::Vector_3 Vector_3;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef Face_constraint<face_descriptor, Vector_3> Constraint;
+  typedef Levi_civita_connection<TriangleMesh, Vertex_point_map> Connection;
+  typedef std::complex<double> Complex;
+  /// @}
+
+  /// builds the face frames and the connection of `tm` for fields of degree `N`.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{`Vertex_point_map`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sign_symmetric}
+  ///     \cgalParamDescription{whether the field is made of pairs `{u, -u}` (frame fields, N-RoSy fields of even N);
+  ///                           given with `Polyvector_fields::parameters::sign_symmetric()`}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`false`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{a prototype of the solver; each factorization uses its own copy}
+  ///     \cgalParamType{`Solver_traits`}
+  ///     \cgalParamDefault{`Solver_traits()`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// Check `status()` before use.
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  Polyvector_field_designer(const TriangleMesh& tm, std::size_t N,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+    : m_N(N),
+      m_sign_symmetric(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np::sign_symmetric), false)),
+      m_solver_prototype(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver_traits()))
+  {
+    const auto start = std::chrono::steady_clock::now();
+    m_connection.reset(new Connection(
+      tm, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                             CGAL::get_const_property_map(CGAL::vertex_point, tm))));
+    m_statistics.connection = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if(N == 0 || (m_sign_symmetric && N % 2 != 0))
+      m_status = Error_code::INVALID_DEGREE;
+    else
+      m_status = m_connection->status();
+  }
+
+  /// returns `Error_code::SUCCESS` when the mesh and the degree are valid, the reason otherwise
+  /// (`EMPTY_MESH`, `NON_TRIANGLE_FACE`, `DEGENERATE_FACE`, `INVALID_DEGREE`).
+  Error_code status() const { return m_status; }
+
+  /// returns the degree `N`.
+  std::size_t degree() const { return m_N; }
+
+  /// returns whether the field is sign-symmetric.
+  bool is_sign_symmetric() const { return m_sign_symmetric; }
+
+  /// returns the face frames and connection.
+  const Connection& connection() const { return *m_connection; }
+
+  /// \name Constraints
+  /// @{
+
+  /// adds a constraint. On failure nothing is added and the error is returned:
+  /// `INVALID_FACE`, `DUPLICATE_CONSTRAINT`, `EMPTY_CONSTRAINT`, `TOO_MANY_CONSTRAINT_VECTORS`,
+  /// `ZERO_CONSTRAINT_VECTOR`, `NON_FINITE_VALUE`, `INVALID_WEIGHT`, or the `status()` of an invalid designer.
+  Error_code add_constraint(const Constraint& constraint)
+  {
+    if(m_status != Error_code::SUCCESS)
+      return m_status;
+    if(!m_connection->contains(constraint.face))
+      return Error_code::INVALID_FACE;
+    const std::size_t f = m_connection->index(constraint.face);
+    if(m_specifications.count(f))
+      return Error_code::DUPLICATE_CONSTRAINT;
+    internal::Face_specification specification;
+    const Error_code code = internal::make_face_specification(m_connection->frame(f), constraint.vectors, constraint.weight,
+                                                              m_N, m_sign_symmetric, specification);
+    if(code == Error_code::SUCCESS)
+      m_specifications.emplace(f, std::move(specification));
+    return code;
+  }
+
+  /// adds the constraint `{f, vectors, weight}`.
+  Error_code add_constraint(face_descriptor f, const std::vector<Vector_3>& vectors,
+                            double weight = std::numeric_limits<double>::infinity())
+  {
+    return add_constraint(Constraint{ f, vectors, weight });
+  }
+
+  /// adds all the constraints of `constraints` (a range of `Constraint`), or none of them
+  /// if one is refused; returns the first error.
+  template <typename ConstraintRange>
+  Error_code add_constraints(const ConstraintRange& constraints)
+  {
+    const std::map<std::size_t, internal::Face_specification> saved = m_specifications;
+    for(const Constraint& c : constraints)
+    {
+      const Error_code code = add_constraint(c);
+      if(code != Error_code::SUCCESS)
+      {
+        m_specifications = saved;
+        return code;
+      }
+    }
+    return Error_code::SUCCESS;
+  }
+
+  /// removes all constraints. The factorization is kept: if the next constraints
+  /// hold on the same faces, with the same kinds, weights (and, for partial
+  /// constraints, the same vectors), `solve()` does not factor again.
+  void clear_constraints() { m_specifications.clear(); }
+
+  /// returns the number of constrained faces.
+  std::size_t number_of_constraints() const { return m_specifications.size(); }
+  /// @}
+
+  /// computes the field and writes it into `coefficients`.
+  ///
+  /// \tparam CoefficientMap a model of `WritablePropertyMap` with `face_descriptor` as key type
+  ///         and `std::vector<std::complex<double>>` as value type: the `N` coefficients
+  ///         `c_0 .. c_{N-1}` of the monic polynomial of each face, in the face frame.
+  ///
+  /// \returns `Error_code::SUCCESS`, `status()` if the designer is invalid, or `SOLVER_FAILURE`.
+  ///          On failure `coefficients` is not written.
+  template <typename CoefficientMap>
+  Error_code solve(CoefficientMap coefficients)
+  {
+    const Error_code code = compute();
+    if(code != Error_code::SUCCESS)
+      return code;
+    for(std::size_t f = 0; f < m_connection->number_of_faces(); ++f)
+      put(coefficients, m_connection->face(f),
+          std::vector<Complex>(m_solution.begin() + std::ptrdiff_t(f * m_N), m_solution.begin() + std::ptrdiff_t((f + 1) * m_N)));
+    return Error_code::SUCCESS;
+  }
+
+  /// returns the coefficients of the last successful `solve()`: `N` per face,
+  /// face after face in the order of `connection().index()`.
+  const std::vector<Complex>& coefficient_array() const { return m_solution; }
+
+  /// returns the times and facts of the last `solve()`.
+  const Design_statistics& statistics() const { return m_statistics; }
+
+private:
+  typedef internal::Coefficient_system<Connection, Solver_traits> System;
+
+  // The degrees that are not identically zero under the current constraints.
+  std::vector<int> active_degrees() const
+  {
+    const std::vector<int> admissible = internal::admissible_degrees(m_N, m_sign_symmetric);
+    std::vector<char> used(m_N, 0);
+    for(const auto& entry : m_specifications)
+    {
+      if(!entry.second.full)
+        return admissible;  // P(u) = 0 involves every degree
+      for(int m : admissible)
+        if(entry.second.values[std::size_t(m)] != Complex(0))
+          used[std::size_t(m)] = 1;
+    }
+    std::vector<int> degrees;
+    for(int m : admissible)
+      if(used[std::size_t(m)])
+        degrees.push_back(m);
+    return degrees;
+  }
+
+  // What the matrices depend on: faces, kinds, weights, partial rows.
+  bool same_structure(const std::map<std::size_t, internal::Face_specification>& a,
+                      const std::map<std::size_t, internal::Face_specification>& b) const
+  {
+    if(a.size() != b.size())
+      return false;
+    for(auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j)
+    {
+      if(i->first != j->first || i->second.full != j->second.full || i->second.weight != j->second.weight)
+        return false;
+      if(!i->second.full && (i->second.rows != j->second.rows || i->second.rhs != j->second.rhs))
+        return false;
+    }
+    return true;
+  }
+
+  Error_code compute()
+  {
+    if(m_status != Error_code::SUCCESS)
+      return m_status;
+    const std::vector<int> degrees = active_degrees();
+    m_statistics.factorization_reused = false;
+    m_statistics.assembly = m_statistics.factorization = m_statistics.solve = 0;
+    m_statistics.number_of_degrees_solved = degrees.size();
+    if(m_system && m_system_degrees == degrees && same_structure(m_system->specifications(), m_specifications))
+    {
+      m_system->specifications() = m_specifications;
+      m_statistics.factorization_reused = true;
+    }
+    else
+    {
+      m_system.reset(new System(*m_connection, m_N, degrees, m_solver_prototype));
+      m_system_degrees = degrees;
+      m_system->specifications() = m_specifications;
+      if(!m_system->factor())
+      {
+        m_system.reset();
+        return Error_code::SOLVER_FAILURE;
+      }
+      m_statistics.assembly = m_system->times().assembly;
+      m_statistics.factorization = m_system->times().factorization;
+    }
+    std::vector<Complex> solution;
+    if(!m_system->solve(solution))
+    {
+      m_system.reset();
+      return Error_code::SOLVER_FAILURE;
+    }
+    m_statistics.solve = m_system->times().solve;
+    m_solution.swap(solution);
+    return Error_code::SUCCESS;
+  }
+
+  std::size_t m_N;
+  bool m_sign_symmetric;
+  Solver_traits m_solver_prototype;
+  std::unique_ptr<Connection> m_connection;
+  Error_code m_status = Error_code::SUCCESS;
+  std::map<std::size_t, internal::Face_specification> m_specifications;
+  std::unique_ptr<System> m_system;
+  std::vector<int> m_system_degrees;
+  std::vector<Complex> m_solution;
+  Design_statistics m_statistics;
+};
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_POLYVECTOR_FIELD_DESIGNER_H

@@ -1,0 +1,112 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_COMPUTE_FIELD_ROOTS_H
+#define CGAL_POLYVECTOR_FIELDS_COMPUTE_FIELD_ROOTS_H
+
+/// \file compute_field_roots.h
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/internal/field_access.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/polyvector_polynomial.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <complex>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// Roots of every face (N per face, counterclockwise, in the face frame).
+inline void field_roots(const std::vector<std::complex<double> >& coefficients, std::size_t N, bool sign_symmetric,
+                        std::vector<std::complex<double> >& roots)
+{
+  const std::size_t F = coefficients.size() / N;
+  roots.resize(F * N);
+  for(std::size_t f = 0; f < F; ++f)
+    polyvector_roots(coefficients.data() + f * N, N, roots.data() + f * N, sign_symmetric);
+}
+
+// World-space roots of a connection's faces, written into `root_map`.
+template <typename Vector_3, typename Connection, typename RootMap>
+void write_world_roots(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& roots,
+                       RootMap root_map)
+{
+  std::vector<Vector_3> vectors(N);
+  for(std::size_t f = 0; f < connection.number_of_faces(); ++f)
+  {
+    for(std::size_t k = 0; k < N; ++k)
+    {
+      const std::array<double, 3> w = connection.frame(f).to_world(roots[f * N + k]);
+      vectors[k] = Vector_3(w[0], w[1], w[2]);
+    }
+    put(root_map, connection.face(f), vectors);
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgPolyvectorFieldsPolynomial
+///
+/// computes the `N` vectors of every face, in world coordinates, from the
+/// coefficients of the field (the roots of each face's polynomial, mapped
+/// from the face frame to 3D; see `polyvector_roots()` for their order).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
+/// \tparam RootMap a model of `WritablePropertyMap` from faces to `std::vector<Vector_3>`, `Vector_3` the vector type of the kernel
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class, model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sign_symmetric}
+///     \cgalParamDescription{use the exact `{u, -u}` root pairs of sign-symmetric fields}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns `SUCCESS`, a mesh error (`EMPTY_MESH`, `NON_TRIANGLE_FACE`, `DEGENERATE_FACE`), `INVALID_DEGREE`,
+///          `INCONSISTENT_DEGREE` (a coefficient vector not of size `N`) or `NON_FINITE_VALUE`.
+///          On failure `root_map` is not written.
+template <typename TriangleMesh, typename CoefficientMap, typename RootMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code compute_field_roots(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map, RootMap root_map,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  const bool sign_symmetric = choose_parameter(get_parameter(np, internal_np::sign_symmetric), false);
+  if(N == 0 || (sign_symmetric && N % 2 != 0))
+    return Error_code::INVALID_DEGREE;
+  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  std::vector<std::complex<double> > coefficients, roots;
+  const Error_code code = internal::read_coefficients(connection, N, coefficient_map, coefficients);
+  if(code != Error_code::SUCCESS)
+    return code;
+  internal::field_roots(coefficients, N, sign_symmetric, roots);
+  internal::write_world_roots<typename Geom_traits::Vector_3>(connection, N, roots, root_map);
+  return Error_code::SUCCESS;
+}
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_COMPUTE_FIELD_ROOTS_H

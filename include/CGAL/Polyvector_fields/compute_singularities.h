@@ -1,0 +1,240 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_COMPUTE_SINGULARITIES_H
+#define CGAL_POLYVECTOR_FIELDS_COMPUTE_SINGULARITIES_H
+
+/// \file compute_singularities.h
+/// Topology of PolyVector fields: principal matching and singularities (paper, Section 3.4).
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Singularity.h>
+#include <CGAL/Polyvector_fields/compute_field_roots.h>
+#include <CGAL/Polyvector_fields/internal/field_access.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/iterator.h>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+constexpr double two_pi = 6.283185307179586476925286766559;
+
+// Angle of the corner of face(h) at target(h).
+template <typename Connection>
+double corner_angle(const Connection& connection, typename Connection::halfedge_descriptor h)
+{
+  using boost::get;
+  const auto& tm = connection.mesh();
+  const auto vpm = connection.vertex_point_map();
+  const std::array<double, 3> v = to_array(get(vpm, target(h, tm)));
+  const std::array<double, 3> a = difference(to_array(get(vpm, source(h, tm))), v);
+  const std::array<double, 3> b = difference(to_array(get(vpm, target(next(h, tm), tm))), v);
+  const std::array<double, 3> n = cross(a, b);
+  return std::atan2(std::sqrt(dot(n, n)), dot(a, b));
+}
+
+// Index numerator of the interior vertex target(h0), NOTES §4: walking once
+// counterclockwise around the vertex (seen from the side the normals point
+// to), sum the principal-matching angles of the constant coefficient y_f and
+// N times the angle defect. `defined` is false if some y_f of the ring is 0.
+template <typename Connection>
+int index_numerator(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& c,
+                    typename Connection::halfedge_descriptor h0, bool& defined, double& residual)
+{
+  const auto& tm = connection.mesh();
+  double angle_sum = 0, delta_sum = 0;
+  defined = true;
+  auto h = h0;
+  do
+  {
+    const auto o = opposite(h, tm);
+    const std::size_t f = connection.index(face(h, tm)), g = connection.index(face(o, tm));
+    const std::complex<double> y_f = c[f * N], y_g = c[g * N];
+    if(y_f == std::complex<double>(0) || y_g == std::complex<double>(0))
+      defined = false;
+    const std::complex<double> e_f = connection.edge_direction(h), e_g = -connection.edge_direction(o);
+    // Arg( y_g conj(e_g)^N / (y_f conj(e_f)^N) ), for unit e_f: 1/conj(e_f)^N = e_f^N.
+    delta_sum += std::arg(y_g * std::pow(std::conj(e_g), int(N)) * std::conj(y_f) * std::pow(e_f, int(N)));
+    angle_sum += corner_angle(connection, h);
+    h = prev(o, tm);  // the next face counterclockwise around target(h0)
+  } while(h != h0);
+  const double defect = two_pi - angle_sum;
+  const double k = (double(N) * defect + delta_sum) / two_pi;
+  residual = std::abs(k - std::round(k));
+  return int(std::lround(k));
+}
+
+} // namespace internal
+
+/// \ingroup PkgPolyvectorFieldsTopology
+///
+/// computes the singular vertices of an N-PolyVector field and their indices.
+///
+/// The singularities of a PolyVector field are those of the N-RoSy field of its
+/// constant coefficient `c_0` (paper, Section 3.4). For every interior vertex `v`,
+/// with angle defect `K_v`, walking once counterclockwise around `v` (seen from
+/// the side the face normals point to) and taking at each crossing from `f` to
+/// `g` the principal-matching angle `delta_e = Arg(c_{g,0} conj(e_g)^N / (c_{f,0} conj(e_f)^N))`
+/// in `(-pi, pi]`, the index of `v` is `k/N` with `k = (N K_v + sum delta_e) / (2 pi)`,
+/// an integer. Vertices with `k != 0` are written to `singularities`. On a closed
+/// mesh of Euler characteristic `chi`, the numerators sum to `N chi`. Boundary
+/// vertices carry no index.
+///
+/// If some face around an interior vertex has `c_0 = 0`, the index there is
+/// undefined: the vertex is written to `undefined_vertices` and to no other output.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
+/// \tparam SingularityOutputIterator an output iterator accepting `Singularity<vertex_descriptor>`
+/// \tparam VertexOutputIterator an output iterator accepting `vertex_descriptor`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns `SUCCESS`, a mesh error, `INVALID_DEGREE`, `INCONSISTENT_DEGREE` or `NON_FINITE_VALUE`;
+///          nothing is written on failure.
+template <typename TriangleMesh, typename CoefficientMap, typename SingularityOutputIterator,
+          typename VertexOutputIterator, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code compute_singularities(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+                                 SingularityOutputIterator singularities, VertexOutputIterator undefined_vertices,
+                                 const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  std::vector<std::complex<double> > c;
+  const Error_code code = internal::read_coefficients(connection, N, coefficient_map, c);
+  if(code != Error_code::SUCCESS)
+    return code;
+  std::vector<Singularity<vertex_descriptor> > found;
+  std::vector<vertex_descriptor> undefined;
+  for(vertex_descriptor v : vertices(tm))
+  {
+    const auto h0 = halfedge(v, tm);
+    if(h0 == boost::graph_traits<TriangleMesh>::null_halfedge() || CGAL::is_border(v, tm))
+      continue;
+    bool defined;
+    double residual;
+    const int k = internal::index_numerator(connection, N, c, h0, defined, residual);
+    if(!defined)
+      undefined.push_back(v);
+    else if(k != 0)
+      found.push_back(Singularity<vertex_descriptor>{ v, k });
+  }
+  for(const auto& s : found)
+    *singularities++ = s;
+  for(const auto& v : undefined)
+    *undefined_vertices++ = v;
+  return Error_code::SUCCESS;
+}
+
+/// \ingroup PkgPolyvectorFieldsTopology
+///
+/// computes the singularities as the other overload, and drops the vertices of undefined index.
+template <typename TriangleMesh, typename CoefficientMap, typename SingularityOutputIterator,
+          typename T = bool, typename Tag = CGAL::internal_np::all_default_t,
+          typename Base = CGAL::internal_np::No_property>
+Error_code compute_singularities(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+                                 SingularityOutputIterator singularities,
+                                 const CGAL::Named_function_parameters<T, Tag, Base>& np = CGAL::parameters::default_values())
+{
+  return compute_singularities(tm, N, coefficient_map, singularities, CGAL::Emptyset_iterator(), np);
+}
+
+/// \ingroup PkgPolyvectorFieldsTopology
+///
+/// computes the principal matching of every interior edge: with `h = halfedge(e)`,
+/// the roots of `face(h)` and of `face(opposite(h))` in the counterclockwise order
+/// of `polyvector_roots()`, root `i` of `face(h)` matches root `(i + s) mod N`
+/// of `face(opposite(h))`, where the shift `s` is the one for which the sum of the
+/// rotations of the matched roots after Levi-Civita transport lies in `(-pi, pi]`
+/// (paper, Section 3.4).
+///
+/// \tparam MatchingMap a model of `WritablePropertyMap` from `edge_descriptor` to `int`;
+///         boundary edges are not written
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sign_symmetric}
+///     \cgalParamDescription{use the exact `{u, -u}` root pairs of sign-symmetric fields}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns as `compute_singularities()`; nothing is written on failure.
+template <typename TriangleMesh, typename CoefficientMap, typename MatchingMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code principal_matching(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+                              MatchingMap matching, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  const bool sign_symmetric = choose_parameter(get_parameter(np, internal_np::sign_symmetric), false);
+  if(N == 0 || (sign_symmetric && N % 2 != 0))
+    return Error_code::INVALID_DEGREE;
+  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  std::vector<std::complex<double> > c, roots;
+  const Error_code code = internal::read_coefficients(connection, N, coefficient_map, c);
+  if(code != Error_code::SUCCESS)
+    return code;
+  internal::field_roots(c, N, sign_symmetric, roots);
+  auto lifted_sum = [N](const std::complex<double>* r) {
+    // Arguments in [0, 2 pi), non-decreasing by the ordering of polyvector_roots().
+    double s = 0;
+    for(std::size_t i = 0; i < N; ++i)
+    {
+      double a = std::arg(r[i]);
+      if(a < 0)
+        a += internal::two_pi;
+      s += a;
+    }
+    return s;
+  };
+  for(const auto& e : connection.interior_edges())
+  {
+    // Transport from f to g turns every vector by rho = Arg(conj(e_f) e_g).
+    const double rho = std::arg(std::conj(e.e_f) * e.e_g);
+    const double S0 = lifted_sum(roots.data() + e.g * N) - lifted_sum(roots.data() + e.f * N) - double(N) * rho;
+    // S(s) = S0 + 2 pi s must lie in (-pi, pi].
+    long s = -std::lround(S0 / internal::two_pi);
+    while(S0 + internal::two_pi * double(s) > internal::two_pi / 2)
+      --s;
+    while(S0 + internal::two_pi * double(s) <= -internal::two_pi / 2)
+      ++s;
+    const long n = long(N);
+    put(matching, edge(e.h, tm), int(((s % n) + n) % n));
+  }
+  return Error_code::SUCCESS;
+}
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_COMPUTE_SINGULARITIES_H

@@ -1,0 +1,153 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_CONSTRAINT_SPECIFICATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_CONSTRAINT_SPECIFICATION_H
+
+// From a constraint in world coordinates to what it asks of the coefficients.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/face_frames.h>
+#include <CGAL/Polyvector_fields/polyvector_polynomial.h>
+#include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// The degrees m in 0..N-1 a field can use: all of them, or with sign symmetry
+// those with N - m even.
+inline std::vector<int> admissible_degrees(std::size_t N, bool sign_symmetric)
+{
+  std::vector<int> degrees;
+  for(std::size_t m = 0; m < N; ++m)
+    if(!sign_symmetric || (N - m) % 2 == 0)
+      degrees.push_back(int(m));
+  return degrees;
+}
+
+inline double binomial(std::size_t n, std::size_t k)
+{
+  double b = 1;
+  for(std::size_t i = 1; i <= k; ++i)
+    b = b * double(n - k + i) / double(i);
+  return b;
+}
+
+// Coefficients computed from roots carry round-off of about
+// eps * binom(N, m) * s^(N-m), s the largest root: below a small multiple of
+// that, a coefficient is exactly zero (an N-RoSy has exactly one non-zero
+// coefficient), so that the degree can be skipped.
+inline void clean_round_off(std::vector<Complex>& c, const std::vector<Complex>& roots)
+{
+  double s = 0;
+  for(const Complex& u : roots)
+    s = (std::max)(s, std::abs(u));
+  const std::size_t N = c.size();
+  for(std::size_t m = 0; m < N; ++m)
+    if(std::abs(c[m]) <= 64 * std::numeric_limits<double>::epsilon() * binomial(N, m) * std::pow(s, double(N - m)))
+      c[m] = 0;
+}
+
+// Converts the world vectors of a constraint on the face with `frame` into a
+// specification. Each vector is projected onto the face plane and keeps its
+// length. `degrees` are the active degrees of the system (used for the rows of
+// a partial constraint).
+template <typename Vector_3>
+Error_code make_face_specification(const Face_frame& frame,
+                                   const std::vector<Vector_3>& vectors,
+                                   double weight,
+                                   std::size_t N,
+                                   bool sign_symmetric,
+                                   Face_specification& specification)
+{
+  if(vectors.empty())
+    return Error_code::EMPTY_CONSTRAINT;
+  if(std::isnan(weight))
+    return Error_code::NON_FINITE_VALUE;
+  if(!(weight > 0))
+    return Error_code::INVALID_WEIGHT;
+  const std::size_t n = sign_symmetric ? N / 2 : N;
+  if(vectors.size() > n)
+    return Error_code::TOO_MANY_CONSTRAINT_VECTORS;
+
+  std::vector<Complex> roots;
+  for(const Vector_3& v : vectors)
+  {
+    const double x = CGAL::to_double(v.x()), y = CGAL::to_double(v.y()), z = CGAL::to_double(v.z());
+    if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      return Error_code::NON_FINITE_VALUE;
+    const double length = std::sqrt(x * x + y * y + z * z);
+    const Complex u = frame.to_complex(x, y, z);
+    const double projected = std::abs(u);
+    if(!(length > 0) || !(projected > 1e-9 * length))
+      return Error_code::ZERO_CONSTRAINT_VECTOR;
+    roots.push_back(u * (length / projected));
+  }
+
+  Face_specification s;
+  s.weight = weight;
+  if(roots.size() == n)
+  {
+    s.full = true;
+    s.values = sign_symmetric ? sign_symmetric_polyvector_coefficients(roots) : polyvector_coefficients(roots);
+    std::vector<Complex> all_roots = roots;
+    clean_round_off(s.values, all_roots);
+  }
+  else
+  {
+    // P(u) = 0 for every given u, in the variable x = u (or x = u^2 with sign
+    // symmetry, where P(z) = Q(z^2)). The j-th repetition of the same x asks
+    // that the j-th derivative vanish too: a root of multiplicity j+1.
+    const std::vector<int> degrees = admissible_degrees(N, sign_symmetric);
+    const std::size_t slots = degrees.size();
+    std::vector<Complex> xs;
+    std::vector<int> order;
+    for(const Complex& u : roots)
+    {
+      const Complex x = sign_symmetric ? u * u : u;
+      int repeated = 0;
+      for(const Complex& previous : xs)
+        if(std::abs(previous - x) <= 1e-12 * (std::max)(std::abs(previous), std::abs(x)))
+          ++repeated;
+      xs.push_back(x);
+      order.push_back(repeated);
+    }
+    s.rows.resize(Eigen::Index(xs.size()), Eigen::Index(slots));
+    s.rhs.resize(Eigen::Index(xs.size()));
+    // Q(x) = x^n + sum_q c_{degrees[q]} x^q, derivative j: falling factorials.
+    auto falling = [](std::size_t a, int j) {
+      double r = 1;
+      for(int i = 0; i < j; ++i)
+        r *= double(a) - i;
+      return r;
+    };
+    for(std::size_t r = 0; r < xs.size(); ++r)
+    {
+      const int j = order[r];
+      for(std::size_t q = 0; q < slots; ++q)
+        s.rows(Eigen::Index(r), Eigen::Index(q)) =
+          (int(q) >= j) ? falling(q, j) * std::pow(xs[r], int(q) - j) : Complex(0);
+      s.rhs[Eigen::Index(r)] = -falling(n, j) * std::pow(xs[r], int(n) - j);
+    }
+  }
+  specification = s;
+  return Error_code::SUCCESS;
+}
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_CONSTRAINT_SPECIFICATION_H

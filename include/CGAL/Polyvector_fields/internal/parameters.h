@@ -1,0 +1,119 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_PARAMETERS_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_PARAMETERS_H
+
+// Named parameters of this package.
+//
+// CGAL 5.5 builds the dot-chaining members of `CGAL::Named_function_parameters`
+// from a fixed list, so a package outside CGAL cannot add members. Instead each
+// parameter of this package is a tag in `CGAL::Polyvector_fields::internal_np`
+// and a free function in `CGAL::Polyvector_fields::parameters` that either
+// starts a pack or stacks the value on top of an existing pack:
+//
+//   PVF::parameters::sign_symmetric(true)                       // new pack
+//   PVF::parameters::sign_symmetric(true, CGAL::parameters::verbose(true))
+//   PVF::parameters::sign_symmetric(true).vertex_point_map(vpm) // CGAL's members chain after ours
+//   PVF::parameters::combine(np1, np2)                           // stacks two packs
+//
+// A value given twice is found at the top of the pack (the last one stacked).
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <type_traits>
+
+#define CGAL_PVF_ADD_NAMED_PARAMETER(TAG_TYPE, TAG_VALUE, FUNCTION)                       \
+  namespace CGAL { namespace Polyvector_fields {                                        \
+  namespace internal_np { enum TAG_TYPE { TAG_VALUE }; }                                \
+  namespace parameters {                                                                \
+  template <typename K>                                                                 \
+  CGAL::Named_function_parameters<K, internal_np::TAG_TYPE>                             \
+  FUNCTION(const K& k)                                                                  \
+  { return CGAL::Named_function_parameters<K, internal_np::TAG_TYPE>(k); }              \
+  template <typename K, typename T, typename Tag, typename Base>                        \
+  CGAL::Named_function_parameters<K, internal_np::TAG_TYPE,                             \
+                                  CGAL::Named_function_parameters<T, Tag, Base> >       \
+  FUNCTION(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& np)         \
+  {                                                                                     \
+    return CGAL::Named_function_parameters<K, internal_np::TAG_TYPE,                    \
+                                           CGAL::Named_function_parameters<T, Tag, Base> >(k, np); \
+  }                                                                                     \
+  } } }
+
+// Field design (paper Section 3).
+/// `bool`: the field is made of pairs {u, -u} (only even-degree coefficients); default `false`.
+CGAL_PVF_ADD_NAMED_PARAMETER(sign_symmetric_t, sign_symmetric, sign_symmetric)
+
+// Frame fields (paper Section 4).
+CGAL_PVF_ADD_NAMED_PARAMETER(angle_bound_t, angle_bound, angle_bound)
+CGAL_PVF_ADD_NAMED_PARAMETER(orthogonality_weight_t, orthogonality_weight, orthogonality_weight)
+CGAL_PVF_ADD_NAMED_PARAMETER(initial_lambda_t, initial_lambda, initial_lambda)
+CGAL_PVF_ADD_NAMED_PARAMETER(lambda_factor_t, lambda_factor, lambda_factor)
+CGAL_PVF_ADD_NAMED_PARAMETER(tolerance_t, tolerance, tolerance)
+CGAL_PVF_ADD_NAMED_PARAMETER(principal_curvature_map_t, principal_curvature_map, principal_curvature_map)
+
+// Curvature estimation and curvature constraints.
+CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)
+CGAL_PVF_ADD_NAMED_PARAMETER(anisotropy_threshold_t, anisotropy_threshold, anisotropy_threshold)
+CGAL_PVF_ADD_NAMED_PARAMETER(constrained_fraction_t, constrained_fraction, constrained_fraction)
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace parameters {
+
+using CGAL::parameters::default_values;
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::is_default_parameter;
+
+namespace internal {
+
+// Re-stacks every entry of `top` onto `base`, keeping their order.
+template <typename Base>
+const Base& restack(const CGAL::Named_function_parameters<bool, CGAL::internal_np::all_default_t>&,
+                    const Base& base)
+{
+  return base;
+}
+
+template <typename T, typename Tag, typename Base>
+CGAL::Named_function_parameters<T, Tag, Base>
+restack(const CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& top,
+        const Base& base)
+{
+  return CGAL::Named_function_parameters<T, Tag, Base>(top.v, base);
+}
+
+template <typename T, typename Tag, typename TopBase, typename Base>
+auto restack(const CGAL::Named_function_parameters<T, Tag, TopBase>& top, const Base& base)
+{
+  auto below = restack(static_cast<const TopBase&>(top), base);
+  return CGAL::Named_function_parameters<T, Tag, decltype(below)>(top.v, below);
+}
+
+} // namespace internal
+
+/// stacks the named-parameter packs `np1`, `np2`, ...; a value given in a later
+/// pack hides the same parameter in an earlier one.
+template <typename NP1>
+const NP1& combine(const NP1& np1)
+{
+  return np1;
+}
+
+template <typename NP1, typename NP2, typename... NPs>
+auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
+{
+  return combine(internal::restack(np2, np1), nps...);
+}
+
+} // namespace parameters
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_PARAMETERS_H

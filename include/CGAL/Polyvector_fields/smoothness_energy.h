@@ -1,0 +1,84 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_SMOOTHNESS_ENERGY_H
+#define CGAL_POLYVECTOR_FIELDS_SMOOTHNESS_ENERGY_H
+
+/// \file smoothness_energy.h
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/internal/field_access.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <complex>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// Eq. 6 with the transport power N - m (NOTES §1), on a flat coefficient array.
+template <typename Connection>
+double smoothness_energy(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& c)
+{
+  double energy = 0;
+  for(const auto& e : connection.interior_edges())
+    for(std::size_t m = 0; m < N; ++m)
+    {
+      const int power = int(N - m);
+      energy += std::norm(c[e.f * N + m] * std::pow(std::conj(e.e_f), power)
+                          - c[e.g * N + m] * std::pow(std::conj(e.e_g), power));
+    }
+  return energy;
+}
+
+} // namespace internal
+
+/// \ingroup PkgPolyvectorFieldsDesign
+///
+/// returns the smoothness energy of a PolyVector field (paper Eq. 6, with the
+/// transport power `N - m` of NOTES §1):
+/// the sum over interior edges `(f, g)` and degrees `m` of
+/// `|c_{f,m} conj(e_f)^(N-m) - c_{g,m} conj(e_g)^(N-m)|^2`, where `e_f`, `e_g`
+/// are the unit direction of the common edge in the frames of `f` and `g`.
+/// It is zero exactly for a field that is Levi-Civita parallel across every edge.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the energy, or a quiet NaN when the mesh is not a valid triangle mesh, `N` is 0,
+///          or a coefficient vector is not of size `N` or not finite.
+template <typename TriangleMesh, typename CoefficientMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double smoothness_energy(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  std::vector<std::complex<double> > c;
+  if(internal::read_coefficients(connection, N, coefficient_map, c) != Error_code::SUCCESS)
+    return std::numeric_limits<double>::quiet_NaN();
+  return internal::smoothness_energy(connection, N, c);
+}
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_SMOOTHNESS_ENERGY_H

@@ -9,9 +9,11 @@
 //
 // Reads a triangle mesh and constraints, designs the smoothest N-PolyVector
 // field, and writes the field (.rawfield), its singularities (.sings) and a
-// VTK file for ParaView. With no argument it designs a frame field on the
-// bundled architectural mesh from its 84 bundled constraints and writes
-// output/inspired_mesh.{rawfield,sings,vtk}. Run with --help for the options.
+// VTK file for ParaView. Frame fields (N = 4, sign-symmetric) can then be
+// optimised to bound their angles or to be conjugate (paper Section 4). With
+// no argument it designs a frame field on the bundled architectural mesh from
+// its 84 bundled constraints and writes output/inspired_mesh.{rawfield,sings,vtk}.
+// Run with --help for the options.
 //
 // Errors are reported on one line of standard error with a non-zero exit
 // status; no output file is written unless every stage succeeded.
@@ -26,6 +28,11 @@
 #include <CGAL/Polyvector_fields/IO/singularities.h>
 #include <CGAL/Polyvector_fields/IO/vtk.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
+#include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
+#include <CGAL/Polyvector_fields/frame_field_measures.h>
+#include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>
@@ -60,6 +67,7 @@ typedef Mesh::Face_index Face;
 typedef Mesh::Vertex_index Vertex;
 typedef PVF::Face_constraint<Face, Vector> Constraint;
 typedef std::complex<double> Complex;
+typedef PVF::Principal_curvatures<Vector> Curvatures;
 
 namespace {
 
@@ -81,12 +89,20 @@ const char* usage =
   "  --sharp-edges DEGREES    partial constraints along edges whose dihedral angle exceeds DEGREES\n"
   "  --random-constraints K   full constraints with random vectors on K random faces (see --seed)\n"
   "  --seed S                 seed of --random-constraints (default 1)\n"
+  "frame fields (imply --degree 4 --sign-symmetric):\n"
+  "  --curvature-constraints PERCENT  constrain PERCENT % of the faces, the most anisotropic ones\n"
+  "                           spread over the surface, to their principal curvature directions\n"
+  "  --angle-bound DEGREES    optimise the field so that u and v make at least DEGREES (0, 90]\n"
+  "  --conjugate              optimise the field to be conjugate (planar-quad remeshing)\n"
+  "  --orthogonality W        with --conjugate: weight W >= 0 pulling the field towards a cross field\n"
+  "  --iterations K           maximum number of frame-field iterations (default 200 / 100)\n"
+  "output (default when none is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
   "  --out-vtk FILE           write a legacy VTK file for ParaView\n"
   "  --help                   print this help\n"
-  "Without any option: --mesh <data>/inspired_mesh.obj --dmat-b/--dmat-bc <its 84 constraints>\n"
-  "  --degree 4 --sign-symmetric, written to output/inspired_mesh.{rawfield,sings,vtk}.\n";
+  "Without --mesh: the bundled <data>/inspired_mesh.obj and, unless other constraints are given,\n"
+  "its 84 constraints (--dmat-b/--dmat-bc), as a frame field (--degree 4 --sign-symmetric).\n";
 
 struct Options
 {
@@ -99,6 +115,15 @@ struct Options
   std::size_t random_constraints = 0;
   unsigned seed = 1;
   std::string out_field, out_singularities, out_vtk;
+  // Frame fields.
+  double curvature_percent = -1;  // < 0: none
+  double angle_bound_degrees = -1;  // < 0: none
+  bool conjugate = false;
+  double orthogonality = 0;
+  std::size_t iterations = 0;  // 0: the algorithm's default
+  bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
+
+  bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate; }
 };
 
 double parse_number(const std::string& flag, const std::string& text)
@@ -113,18 +138,7 @@ double parse_number(const std::string& flag, const std::string& text)
 Options parse(int argc, char** argv)
 {
   Options o;
-  if(argc == 1)
-  {
-    const std::string data = PVF_DATA_DIR;
-    o.mesh = data + "/inspired_mesh.obj";
-    o.dmat_b = data + "/inspired_mesh_b.dmat";
-    o.dmat_bc = data + "/inspired_mesh_bc.dmat";
-    o.sign_symmetric = true;
-    o.out_field = "output/inspired_mesh.rawfield";
-    o.out_singularities = "output/inspired_mesh.sings";
-    o.out_vtk = "output/inspired_mesh.vtk";
-    return o;
-  }
+  bool degree_given = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string flag = argv[i];
@@ -132,6 +146,14 @@ Options parse(int argc, char** argv)
       if(i + 1 >= argc)
         throw Failure(flag + " expects a value", 2);
       return argv[++i];
+    };
+    auto integer = [&](double low, double high) {
+      const std::string text = value();
+      const double d = parse_number(flag, text);
+      if(d != std::floor(d) || d < low || d > high)
+        throw Failure(flag + " expects an integer in " + std::to_string(long(low)) + ".." + std::to_string(long(high)) +
+                      ", got '" + text + "'", 2);
+      return d;
     };
     if(flag == "--help" || flag == "-h")
     {
@@ -141,11 +163,8 @@ Options parse(int argc, char** argv)
     else if(flag == "--mesh") o.mesh = value();
     else if(flag == "--degree")
     {
-      const std::string text = value();
-      const double d = parse_number(flag, text);
-      if(d != std::floor(d) || d < 1 || d > 32)
-        throw Failure("--degree expects an integer in 1..32, got '" + text + "'", 2);
-      o.degree = std::size_t(d);
+      o.degree = std::size_t(integer(1, 32));
+      degree_given = true;
     }
     else if(flag == "--sign-symmetric") o.sign_symmetric = true;
     else if(flag == "--constraints") o.constraints = value();
@@ -163,29 +182,70 @@ Options parse(int argc, char** argv)
       if(o.sharp_degrees < 0 || o.sharp_degrees >= 180)
         throw Failure("--sharp-edges expects an angle in [0, 180) degrees", 2);
     }
-    else if(flag == "--random-constraints" || flag == "--seed")
+    else if(flag == "--random-constraints") o.random_constraints = std::size_t(integer(0, 4e9));
+    else if(flag == "--seed") o.seed = unsigned(integer(0, 4e9));
+    else if(flag == "--curvature-constraints")
     {
-      const std::string text = value();
-      const double d = parse_number(flag, text);
-      if(d != std::floor(d) || d < 0 || d > 4e9)
-        throw Failure(flag + " expects a non-negative integer, got '" + text + "'", 2);
-      if(flag == "--seed")
-        o.seed = unsigned(d);
-      else
-        o.random_constraints = std::size_t(d);
+      o.curvature_percent = parse_number(flag, value());
+      if(!(o.curvature_percent > 0) || o.curvature_percent > 100)
+        throw Failure("--curvature-constraints expects a percentage in (0, 100]", 2);
     }
+    else if(flag == "--angle-bound")
+    {
+      o.angle_bound_degrees = parse_number(flag, value());
+      if(!(o.angle_bound_degrees > 0) || o.angle_bound_degrees > 90)
+        throw Failure("--angle-bound expects an angle in (0, 90] degrees", 2);
+    }
+    else if(flag == "--conjugate") o.conjugate = true;
+    else if(flag == "--orthogonality")
+    {
+      o.orthogonality = parse_number(flag, value());
+      if(o.orthogonality < 0)
+        throw Failure("--orthogonality expects a weight >= 0", 2);
+    }
+    else if(flag == "--iterations") o.iterations = std::size_t(integer(1, 1e6));
     else if(flag == "--out-field") o.out_field = value();
     else if(flag == "--out-singularities") o.out_singularities = value();
     else if(flag == "--out-vtk") o.out_vtk = value();
     else
       throw Failure("unknown option '" + flag + "' (see --help)", 2);
   }
-  if(o.mesh.empty())
-    throw Failure("--mesh is required when options are given (see --help)", 2);
   if(o.dmat_b.empty() != o.dmat_bc.empty())
     throw Failure("--dmat-b and --dmat-bc go together", 2);
+  if(o.mesh.empty())
+  {
+    // The bundled architectural mesh, with its constraints unless others are given.
+    const std::string data = PVF_DATA_DIR;
+    o.mesh = data + "/inspired_mesh.obj";
+    if(o.constraints.empty() && o.dmat_b.empty() && o.random_constraints == 0 && o.sharp_degrees < 0 &&
+       o.curvature_percent < 0)
+    {
+      o.dmat_b = data + "/inspired_mesh_b.dmat";
+      o.dmat_bc = data + "/inspired_mesh_bc.dmat";
+    }
+    if(!degree_given)
+      o.sign_symmetric = true;
+  }
+  if(o.frame_field())
+  {
+    if(o.degree != 4)
+      throw Failure("frame-field options need --degree 4", 2);
+    o.sign_symmetric = true;
+  }
+  if(o.angle_bound_degrees >= 0 && o.conjugate)
+    throw Failure("--angle-bound and --conjugate are two different optimisations: choose one", 2);
+  if(o.orthogonality > 0 && !o.conjugate)
+    throw Failure("--orthogonality goes with --conjugate", 2);
   if(o.sign_symmetric && o.degree % 2 != 0)
     throw Failure("--sign-symmetric needs an even --degree", 2);
+  if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty())
+  {
+    const std::string stem = "output/" + std::filesystem::path(o.mesh).stem().string();
+    o.out_field = stem + ".rawfield";
+    o.out_singularities = stem + ".sings";
+    o.out_vtk = stem + ".vtk";
+    o.default_outputs = true;
+  }
   return o;
 }
 
@@ -342,6 +402,32 @@ int run(const Options& o)
     sharp = edge_constraints.size();
     constraints.insert(constraints.end(), edge_constraints.begin(), edge_constraints.end());
   }
+  // Curvature: for curvature constraints, the conjugate field, and the VTK output of frame fields.
+  auto curvatures = tm.add_property_map<Face, Curvatures>("f:pvf_curvatures").first;
+  const bool has_curvature = o.frame_field();
+  std::size_t from_curvature = 0;
+  if(has_curvature)
+  {
+    times["constraints"] += clock.lap();
+    check(PVF::estimate_principal_curvatures(tm, curvatures), "curvature");
+    times["curvature"] = clock.lap();
+  }
+  if(o.curvature_percent > 0)
+  {
+    std::vector<Constraint> principal;
+    check(PVF::select_curvature_constraints(tm, curvatures, principal,
+                                            PVF::parameters::constrained_fraction(o.curvature_percent / 100)),
+          "curvature constraints");
+    std::set<Face> constrained;
+    for(const Constraint& c : constraints)
+      constrained.insert(c.face);
+    for(const Constraint& c : principal)
+      if(constrained.insert(c.face).second)
+      {
+        constraints.push_back(c);
+        ++from_curvature;
+      }
+  }
   if(o.soft_weight > 0)
     for(Constraint& c : constraints)
       c.weight = o.soft_weight;
@@ -354,7 +440,7 @@ int run(const Options& o)
       throw Failure("constraint on face " + std::to_string(std::size_t(c.face)) + ": " + PVF::get_error_message(code));
     (c.vectors.size() == (o.sign_symmetric ? o.degree / 2 : o.degree) ? full : partial) += 1;
   }
-  times["constraints"] = clock.lap();
+  times["constraints"] += clock.lap();
 
   auto coefficients = tm.add_property_map<Face, std::vector<Complex> >("f:pvf_coefficients").first;
   auto roots = tm.add_property_map<Face, std::vector<Vector> >("f:pvf_roots").first;
@@ -364,6 +450,39 @@ int run(const Options& o)
   times["assembly"] = statistics.assembly;
   times["factorization"] = statistics.factorization;
   times["solve"] = statistics.solve;
+
+  const double smooth_energy = PVF::smoothness_energy(tm, o.degree, coefficients);
+
+  // Frame-field optimisation (Section 4), from the same constraints.
+  std::ostringstream frame_report;
+  if(o.angle_bound_degrees > 0)
+  {
+    PVF::Angle_bound_result result;
+    const auto np = PVF::parameters::angle_bound(o.angle_bound_degrees * CGAL_PI / 180);
+    check(o.iterations ? PVF::design_angle_bounded_frame_field(tm, 4, constraints, coefficients, result,
+                                                                np.number_of_iterations(o.iterations))
+                       : PVF::design_angle_bounded_frame_field(tm, 4, constraints, coefficients, result, np),
+          "angle bound");
+    frame_report << "angle bound     " << o.angle_bound_degrees << " degrees: " << (result.converged ? "converged" : "NOT converged")
+                 << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
+                 << " degrees (free faces), " << result.minimum_angle * 180 / CGAL_PI << " degrees (all faces)\n";
+    times["frame field"] = clock.lap();
+  }
+  if(o.conjugate)
+  {
+    PVF::Conjugate_field_result result;
+    const auto np = PVF::parameters::principal_curvature_map(curvatures,
+                                                             PVF::parameters::orthogonality_weight(o.orthogonality));
+    check(o.iterations ? PVF::design_conjugate_frame_field(tm, 4, constraints, coefficients, result,
+                                                            np.number_of_iterations(o.iterations))
+                       : PVF::design_conjugate_frame_field(tm, 4, constraints, coefficients, result, np),
+          "conjugate field");
+    frame_report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
+                 << " iterations (orthogonality weight " << o.orthogonality << "); residual sum |u^T S v| (unit-size field): "
+                 << result.residual_history.front() << " -> free faces " << result.free_residual << ", constrained faces "
+                 << result.constrained_residual << ", all faces " << result.residual << "\n";
+    times["frame field"] = clock.lap();
+  }
 
   const auto np = PVF::parameters::sign_symmetric(o.sign_symmetric);
   check(PVF::compute_field_roots(tm, o.degree, coefficients, roots, np), "roots");
@@ -377,6 +496,13 @@ int run(const Options& o)
   times["singularities"] = clock.lap();
   const double energy = PVF::smoothness_energy(tm, o.degree, coefficients);
 
+  if(o.default_outputs)
+  {
+    std::error_code error;
+    std::filesystem::create_directories("output", error);
+    if(error)
+      throw Failure("cannot create the folder output/: " + error.message());
+  }
   Output_set outputs;
   if(!o.out_field.empty())
     check(PVF::IO::write_rawfield(outputs.temporary(o.out_field), tm, roots, o.degree), "writing " + o.out_field);
@@ -388,8 +514,28 @@ int run(const Options& o)
     std::vector<Face> constrained;
     for(const Constraint& c : constraints)
       constrained.push_back(c.face);
-    check(PVF::IO::write_vtk(outputs.temporary(o.out_vtk), tm, roots, o.degree, singularities,
-                             PVF::IO::Face_scalar_arrays(), constrained),
+    PVF::IO::Face_scalar_arrays arrays;
+    if(o.sign_symmetric && o.degree == 4)
+    {
+      std::vector<double> angles;
+      auto angle_map = tm.add_property_map<Face, double>("f:pvf_angle").first;
+      check(PVF::compute_frame_angles(tm, coefficients, angle_map), "frame angles");
+      for(Face f : faces(tm))
+        angles.push_back(angle_map[f] * 180 / CGAL_PI);
+      arrays.emplace_back("min_angle_degrees", angles);
+      tm.remove_property_map(angle_map);
+    }
+    if(has_curvature)
+    {
+      std::vector<double> deviation;
+      auto deviation_map = tm.add_property_map<Face, double>("f:pvf_deviation").first;
+      check(PVF::compute_conjugacy_deviation(tm, coefficients, curvatures, deviation_map), "conjugacy deviation");
+      for(Face f : faces(tm))
+        deviation.push_back(deviation_map[f]);
+      arrays.emplace_back("conjugacy_deviation", deviation);
+      tm.remove_property_map(deviation_map);
+    }
+    check(PVF::IO::write_vtk(outputs.temporary(o.out_vtk), tm, roots, o.degree, singularities, arrays, constrained),
           "writing " + o.out_vtk);
   }
   outputs.commit();
@@ -413,9 +559,13 @@ int run(const Options& o)
   std::cout << "field           degree " << o.degree << (o.sign_symmetric ? ", sign-symmetric" : "") << ", "
             << statistics.number_of_degrees_solved << " coefficient degree(s) solved\n";
   std::cout << "constraints     " << constraints.size() << " faces (" << full << " full, " << partial << " partial"
-            << (sharp ? ", " + std::to_string(sharp) + " from sharp edges" : std::string()) << "), "
+            << (sharp ? ", " + std::to_string(sharp) + " from sharp edges" : std::string())
+            << (from_curvature ? ", " + std::to_string(from_curvature) + " from curvature" : std::string()) << "), "
             << (o.soft_weight > 0 ? "soft, weight " + std::to_string(o.soft_weight) : std::string("hard")) << "\n";
-  std::cout << "energy          " << energy << " (smoothness, Eq. 6)\n";
+  std::cout << "energy          " << energy << " (smoothness, Eq. 6)";
+  if(o.frame_field() && (o.angle_bound_degrees > 0 || o.conjugate))
+    std::cout << "; smooth field before optimisation " << smooth_energy;
+  std::cout << "\n" << frame_report.str();
   std::cout << "singularities   " << singularities.size() << " (" << positive << " positive, " << negative
             << " negative), sum of indices " << sum << "/" << o.degree;
   if(!border_edges)
@@ -424,8 +574,9 @@ int run(const Options& o)
   if(!undefined.empty())
     std::cout << "undefined index " << undefined.size() << " vertices next to faces with a zero constant coefficient\n";
   std::cout << "time (s)       ";
-  for(const char* stage : { "load mesh", "frames and connection", "constraints", "assembly", "factorization", "solve",
-                            "roots", "singularities", "write" })
+  for(const char* stage : { "load mesh", "frames and connection", "curvature", "constraints", "assembly", "factorization",
+                            "solve", "frame field", "roots", "singularities", "write" })
+    if(times.count(stage))
     std::cout << " " << stage << " " << std::fixed << std::setprecision(3) << times[stage] << ";";
   std::cout << "\n";
   for(const std::string* out : { &o.out_field, &o.out_singularities, &o.out_vtk })
@@ -441,8 +592,6 @@ int main(int argc, char** argv)
   try
   {
     const Options options = parse(argc, argv);
-    if(argc == 1)
-      std::filesystem::create_directories("output");
     return run(options);
   }
   catch(const Failure& failure)

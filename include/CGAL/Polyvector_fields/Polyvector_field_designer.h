@@ -233,6 +233,12 @@ public:
   /// returns the times and facts of the last `solve()`.
   const Design_statistics& statistics() const { return m_statistics; }
 
+  /// \cond SKIP_IN_MANUAL
+  // For the frame-field iterations: the validated constraints, in face frames.
+  const std::map<std::size_t, internal::Face_specification>& specifications() const { return m_specifications; }
+  const Solver_traits& solver_prototype() const { return m_solver_prototype; }
+  /// \endcond
+
 private:
   typedef internal::Coefficient_system<Connection, Solver_traits> System;
 

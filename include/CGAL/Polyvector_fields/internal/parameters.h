@@ -66,7 +66,16 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace parameters {
 
+// CGAL's own parameters that this package reads, so that a user can name every
+// parameter through CGAL::Polyvector_fields::parameters.
 using CGAL::parameters::default_values;
+using CGAL::parameters::vertex_point_map;
+using CGAL::parameters::geom_traits;
+using CGAL::parameters::sparse_linear_solver;
+using CGAL::parameters::number_of_iterations;
+using CGAL::parameters::verbose;
+using CGAL::parameters::degree_fitting;
+using CGAL::parameters::degree_monge;
 using CGAL::parameters::choose_parameter;
 using CGAL::parameters::get_parameter;
 using CGAL::parameters::is_default_parameter;

@@ -1,0 +1,510 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_IO_VTK_H
+#define CGAL_POLYVECTOR_FIELDS_IO_VTK_H
+
+/// \file IO/vtk.h
+/// Writing a field, its singularities and per-face diagnostics to a legacy VTK
+/// file for ParaView.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
+#include <CGAL/Polyvector_fields/IO/internal/mesh_indices.h>
+#include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
+#include <CGAL/Polyvector_fields/IO/singularities.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <ostream>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace IO {
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// is a list of named per-face scalar arrays for `write_vtk()`: each entry is
+/// a name and one value per face, in the order of `faces(tm)`.
+typedef std::vector<std::pair<std::string, std::vector<double> > > Face_scalar_arrays;
+
+namespace internal {
+
+// Longest array name written; VTK's legacy reader keeps names in 256-byte buffers.
+constexpr std::size_t vtk_max_name_length = 200;
+
+// A VTK-safe name: letters, digits, '_', '-' and '.', at most
+// vtk_max_name_length characters. Blanks would cut the name, and the legacy
+// reader decodes '%' escapes.
+inline bool is_vtk_safe_name(const std::string& name)
+{
+  if(name.empty() || name.size() > vtk_max_name_length)
+    return false;
+  for(char c : name)
+  {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || is_digit(c) ||
+                    c == '_' || c == '-' || c == '.';
+    if(!ok)
+      return false;
+  }
+  return true;
+}
+
+inline std::string vtk_root_name(std::size_t k)
+{
+  std::string name = "root_";
+  append_integer(name, k);
+  return name;
+}
+
+inline void append_scalar_header(std::string& text, const std::string& name, const char* type)
+{
+  text += "SCALARS ";
+  text += name;
+  text += ' ';
+  text += type;
+  text += " 1\nLOOKUP_TABLE default\n";
+}
+
+// Builds the whole file. `is_constrained` is null when no constraint list is given.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename NamedParameters>
+Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                         const SingularityRange& singularities,
+                         const Face_scalar_arrays& face_scalars,
+                         const std::vector<bool>* is_constrained,
+                         const NamedParameters& np,
+                         std::string& out)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using boost::get;
+
+  if(N == 0)
+    return Error_code::INVALID_DEGREE;
+  const auto faces = face_list(tm);
+  const auto vertices = vertex_list(tm);
+  const std::size_t F = faces.size();
+  if(F == 0)
+    return Error_code::EMPTY_MESH;
+  if(is_constrained != nullptr && is_constrained->size() != F)
+    return Error_code::INVALID_PARAMETER;
+
+  // Names: VTK-safe and pairwise distinct, reserved names included.
+  std::set<std::string> names;
+  for(std::size_t k = 0; k < N; ++k)
+    names.insert(vtk_root_name(k));
+  names.insert("singularity_index");
+  if(is_constrained != nullptr)
+    names.insert("is_constrained");
+  for(const auto& array : face_scalars)
+  {
+    if(!is_vtk_safe_name(array.first) || !names.insert(array.first).second || array.second.size() != F)
+      return Error_code::INVALID_PARAMETER;
+    for(double x : array.second)
+      if(!std::isfinite(x))
+        return Error_code::NON_FINITE_VALUE;
+  }
+
+  std::vector<std::pair<std::size_t, int> > singular;
+  const Error_code code = singularity_ids(tm, singularities, singular);
+  if(code != Error_code::SUCCESS)
+    return code;
+  const std::size_t S = singular.size();
+
+  std::string text = "# vtk DataFile Version 3.0\nCGAL Polyvector Fields: ";
+  append_integer(text, N);
+  text += "-PolyVector field\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+
+  // Points.
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  text += "POINTS ";
+  append_integer(text, vertices.size());
+  text += " double\n";
+  for(const auto v : vertices)
+  {
+    const auto& p = get(vpm, v);
+    const double xyz[3] = { CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) };
+    for(int c = 0; c < 3; ++c)
+    {
+      if(!std::isfinite(xyz[c]))
+        return Error_code::NON_FINITE_VALUE;
+      if(c > 0)
+        text += ' ';
+      append_double(text, xyz[c]);
+    }
+    text += '\n';
+  }
+
+  // Cells: the triangles, then one VTK_VERTEX per singularity.
+  const auto vertex_index = make_index(vertices);
+  text += "CELLS ";
+  append_integer(text, F + S);
+  text += ' ';
+  append_integer(text, 4 * F + 2 * S);
+  text += '\n';
+  for(const auto f : faces)
+  {
+    // Unqualified calls: the graph functions are found by ADL whatever the
+    // order in which the mesh header and this one were included.
+    const auto h = halfedge(f, tm);
+    if(next(next(next(h, tm), tm), tm) != h)
+      return Error_code::NON_TRIANGLE_FACE;
+    text += '3';
+    for(const auto v : { source(h, tm), target(h, tm), target(next(h, tm), tm) })
+    {
+      std::size_t id = 0;
+      if(!vertex_index.find(v, id))
+        return Error_code::INVALID_PARAMETER;  // a face refers to a vertex outside vertices(tm)
+      text += ' ';
+      append_integer(text, id);
+    }
+    text += '\n';
+  }
+  for(const auto& s : singular)
+  {
+    text += "1 ";
+    append_integer(text, s.first);
+    text += '\n';
+  }
+  text += "CELL_TYPES ";
+  append_integer(text, F + S);
+  text += '\n';
+  for(std::size_t i = 0; i < F; ++i)
+    text += "5\n";
+  for(std::size_t i = 0; i < S; ++i)
+    text += "1\n";
+
+  // Cell data.
+  text += "CELL_DATA ";
+  append_integer(text, F + S);
+  text += '\n';
+  std::vector<std::vector<double> > roots(N, std::vector<double>(3 * F));
+  for(std::size_t i = 0; i < F; ++i)
+  {
+    const auto& face_roots = get(root_map, faces[i]);
+    if(std::size_t(face_roots.size()) != N)
+      return Error_code::INCONSISTENT_DEGREE;
+    std::size_t k = 0;
+    for(const auto& u : face_roots)
+    {
+      const double xyz[3] = { CGAL::to_double(u.x()), CGAL::to_double(u.y()), CGAL::to_double(u.z()) };
+      for(int c = 0; c < 3; ++c)
+      {
+        if(!std::isfinite(xyz[c]))
+          return Error_code::NON_FINITE_VALUE;
+        roots[k][3 * i + c] = xyz[c];
+      }
+      ++k;
+    }
+  }
+  for(std::size_t k = 0; k < N; ++k)
+  {
+    text += "VECTORS ";
+    text += vtk_root_name(k);
+    text += " double\n";
+    for(std::size_t i = 0; i < F; ++i)
+    {
+      append_double(text, roots[k][3 * i]);
+      text += ' ';
+      append_double(text, roots[k][3 * i + 1]);
+      text += ' ';
+      append_double(text, roots[k][3 * i + 2]);
+      text += '\n';
+    }
+    for(std::size_t i = 0; i < S; ++i)
+      text += "0 0 0\n";
+  }
+
+  append_scalar_header(text, "singularity_index", "double");
+  for(std::size_t i = 0; i < F; ++i)
+    text += "0\n";
+  for(const auto& s : singular)
+  {
+    append_double(text, double(s.second) / double(N));
+    text += '\n';
+  }
+
+  if(is_constrained != nullptr)
+  {
+    append_scalar_header(text, "is_constrained", "int");
+    for(std::size_t i = 0; i < F; ++i)
+      text += (*is_constrained)[i] ? "1\n" : "0\n";
+    for(std::size_t i = 0; i < S; ++i)
+      text += "0\n";
+  }
+
+  for(const auto& array : face_scalars)
+  {
+    append_scalar_header(text, array.first, "double");
+    for(double x : array.second)
+    {
+      append_double(text, x);
+      text += '\n';
+    }
+    for(std::size_t i = 0; i < S; ++i)
+      text += "0\n";
+  }
+
+  out = std::move(text);
+  return Error_code::SUCCESS;
+}
+
+// Turns a list of constrained faces into one flag per face.
+template <typename TriangleMesh>
+Error_code constrained_flags(const TriangleMesh& tm,
+                             const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& list,
+                             std::vector<bool>& flags)
+{
+  const auto faces = face_list(tm);
+  const auto face_index = make_index(faces);
+  std::vector<bool> result(faces.size(), false);
+  for(const auto f : list)
+  {
+    std::size_t id = 0;
+    if(!face_index.find(f, id))
+      return Error_code::INVALID_FACE;
+    result[id] = true;
+  }
+  flags = std::move(result);
+  return Error_code::SUCCESS;
+}
+
+} // namespace internal
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a field of `N` vectors per face, its singularities and optional
+/// per-face data to `os` as a legacy VTK file (ASCII, version 3.0,
+/// `UNSTRUCTURED_GRID`) that ParaView and VisIt open.
+///
+/// The file holds:
+/// - `POINTS`: the vertices of `tm`, in the order of `vertices(tm)`;
+/// - `CELLS`: the triangles of `tm` (VTK type 5), in the order of `faces(tm)`,
+///   their vertices in the order `source(h)`, `target(h)`, `target(next(h))`
+///   with `h = halfedge(f, tm)`; then one `VTK_VERTEX` cell (type 1) per
+///   singularity, on its vertex, in the order of `singularities`;
+/// - `CELL_DATA`, one value per cell:
+///   - `VECTORS root_k double`, `k = 0 .. N-1`: the `k`-th vector of each
+///     face, in world coordinates (zero on the singularity cells);
+///   - `SCALARS singularity_index double`: `k/N` on each singularity cell, `0`
+///     on the triangles;
+///   - `SCALARS is_constrained int` (only if a constraint list or flag vector is
+///     given): `1` on constrained faces, `0` elsewhere and on singularity cells;
+///   - one `SCALARS <name> double` per entry of `face_scalars`: its values on
+///     the triangles, `0` on singularity cells.
+///
+/// In ParaView, color by `singularity_index` and show the singular vertices
+/// with a Threshold on the cell type or the index; draw each `root_k` with
+/// Cell Centers followed by Glyph. Coordinates are converted to `double` and
+/// written so that they read back exactly. Nothing is written to `os` unless
+/// the whole input is valid.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` (and `VertexListGraph`)
+/// \tparam RootMap a model of `ReadablePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+///         `std::vector<Vector_3>` as value type, where `Vector_3` has `x()`, `y()`
+///         and `z()` convertible by `CGAL::to_double()`
+/// \tparam SingularityRange a range of
+///         `Singularity<boost::graph_traits<TriangleMesh>::%vertex_descriptor>`
+///         (an empty `std::vector` if there is none)
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param os the output stream
+/// \param tm the triangle mesh
+/// \param root_map the `N` vectors of each face
+/// \param N the number of vectors per face
+/// \param singularities the singular vertices, whose index is `index_numerator / N`
+/// \param face_scalars named per-face arrays of `num_faces` values each, in the
+///        order of `faces(tm)`, for example
+///        `{ {"conjugacy_deviation", deviation}, {"min_angle_degrees", angles} }`.
+///        Names use only letters, digits, `_`, `-` and `.` (at most 200 characters)
+///        and must differ from each other and from the arrays above.
+/// \param constrained_faces the constrained faces; duplicates are allowed
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns
+/// - `Error_code::INVALID_DEGREE` if `N == 0`;
+/// - `Error_code::EMPTY_MESH` if `tm` has no face;
+/// - `Error_code::NON_TRIANGLE_FACE` if a face is not a triangle;
+/// - `Error_code::INCONSISTENT_DEGREE` if a face holds a number of vectors other than `N`;
+/// - `Error_code::NON_FINITE_VALUE` if a point, vector or scalar value is NaN or
+///   infinite (VTK's legacy reader cannot read them);
+/// - `Error_code::INVALID_FACE` if `constrained_faces` names a face that is not in `tm`;
+/// - `Error_code::INVALID_PARAMETER` if a scalar array has a bad or repeated
+///   name or a size other than the number of faces, if a flag vector has a size
+///   other than the number of faces, or if a singularity names a vertex that is
+///   not in `tm`, has a zero numerator, or repeats a vertex;
+/// - `Error_code::CANNOT_OPEN_FILE` if `os` is not writable or writing fails;
+/// - `Error_code::SUCCESS` otherwise.
+///
+/// \sa `write_rawfield()`, `write_singularities()`
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
+                     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& constrained_faces,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::vector<bool> flags;
+  Error_code code = internal::constrained_flags(tm, constrained_faces, flags);
+  if(code != Error_code::SUCCESS)
+    return code;
+  std::string text;
+  code = internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &flags, np, text);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return internal::write_to_stream(os, text);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file with an `is_constrained` array given as one flag
+/// per face, in the order of `faces(tm)` (`is_constrained.size()` must be the
+/// number of faces); otherwise as the overload that takes a list of constrained faces.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
+                     const std::vector<bool>& is_constrained,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::string text;
+  const Error_code code =
+    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &is_constrained, np, text);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return internal::write_to_stream(os, text);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file with extra per-face arrays and no `is_constrained`
+/// array; otherwise as the overload that takes a list of constrained faces.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::string text;
+  const Error_code code =
+    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, nullptr, np, text);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return internal::write_to_stream(os, text);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file with the field and its singularities only;
+/// otherwise as the overload that takes a list of constrained faces.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  return write_vtk(os, tm, root_map, N, singularities, Face_scalar_arrays(), np);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file to `filename`; see the stream overload.
+///
+/// The file is written to a temporary file in the same directory, renamed to
+/// `filename` once complete: on failure, `filename` is left as it was and no
+/// temporary file remains.
+///
+/// \returns the codes of the stream overload; `Error_code::CANNOT_OPEN_FILE` if
+///          the file cannot be created, written or renamed.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
+                     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& constrained_faces,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::vector<bool> flags;
+  Error_code code = internal::constrained_flags(tm, constrained_faces, flags);
+  if(code != Error_code::SUCCESS)
+    return code;
+  std::string text;
+  code = internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &flags, np, text);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return internal::write_file_atomically(filename, text);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file to `filename`, with constraints given as one flag
+/// per face; see the stream overloads.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
+                     const std::vector<bool>& is_constrained,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::string text;
+  const Error_code code =
+    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &is_constrained, np, text);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return internal::write_file_atomically(filename, text);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file to `filename` with extra per-face arrays and no
+/// `is_constrained` array; see the stream overloads.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::string text;
+  const Error_code code =
+    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, nullptr, np, text);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return internal::write_file_atomically(filename, text);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// writes a legacy VTK file to `filename` with the field and its
+/// singularities only; see the stream overloads.
+template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+                     const SingularityRange& singularities,
+                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  return write_vtk(filename, tm, root_map, N, singularities, Face_scalar_arrays(), np);
+}
+
+} // namespace IO
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_IO_VTK_H

@@ -63,19 +63,19 @@ class Levi_civita_connection
 public:
   /// \name Types
   /// @{
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;          ///< the face type of `TriangleMesh`
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;  ///< the halfedge type of `TriangleMesh`
 
   /// an interior edge seen from its two faces: `face(h)` has index `f` and
   /// `face(opposite(h))` has index `g`. `e_f` and `e_g` are the unit direction of
   /// the edge from `source(h)` to `target(h)` in the frames of `f` and `g`.
   struct Dual_edge
   {
-    std::size_t f;
-    std::size_t g;
-    std::complex<double> e_f;
-    std::complex<double> e_g;
-    halfedge_descriptor h;
+    std::size_t f;              ///< the index of `face(h)`
+    std::size_t g;              ///< the index of `face(opposite(h))`
+    std::complex<double> e_f;   ///< the unit direction of the edge in the frame of `f`
+    std::complex<double> e_g;   ///< the unit direction of the edge in the frame of `g`
+    halfedge_descriptor h;      ///< the halfedge of the edge whose face is `f`
   };
   /// @}
 
@@ -98,9 +98,12 @@ public:
   /// returns the first face for which `status()` is not `SUCCESS`, if any.
   std::size_t first_invalid_face() const { return m_first_invalid_face; }
 
+  /// returns the mesh.
   const TriangleMesh& mesh() const { return m_tm; }
+  /// returns the vertex point map.
   VertexPointMap vertex_point_map() const { return m_vpm; }
 
+  /// returns the number of faces of the mesh.
   std::size_t number_of_faces() const { return m_faces.size(); }
 
   /// returns the index of `f`, in `0 .. number_of_faces()-1`.

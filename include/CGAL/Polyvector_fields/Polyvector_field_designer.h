@@ -83,15 +83,15 @@ public:
   /// @{
   typedef typename CGAL::Default::Get<
     VertexPointMap,
-    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
-  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
-  typedef typename CGAL::Default::Get<Traits, typename CGAL::Kernel_traits<Point_3>::Kernel>::type Geom_traits;
-  typedef typename CGAL::Default::Get<SolverTraits, Default_sparse_solver>::type Solver_traits;
-  typedef typename Geom_traits::Vector_3 Vector_3;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  typedef Face_constraint<face_descriptor, Vector_3> Constraint;
-  typedef Levi_civita_connection<TriangleMesh, Vertex_point_map> Connection;
-  typedef std::complex<double> Complex;
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;  ///< the vertex point map type (`VertexPointMap` or the internal one)
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;  ///< the point type
+  typedef typename CGAL::Default::Get<Traits, typename CGAL::Kernel_traits<Point_3>::Kernel>::type Geom_traits;  ///< the kernel (`Traits` or the kernel of `Point_3`)
+  typedef typename CGAL::Default::Get<SolverTraits, Default_sparse_solver>::type Solver_traits;  ///< the sparse solver (`SolverTraits` or `Default_sparse_solver`)
+  typedef typename Geom_traits::Vector_3 Vector_3;  ///< the vector type of the constraints
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;  ///< the face type of `TriangleMesh`
+  typedef Face_constraint<face_descriptor, Vector_3> Constraint;  ///< the constraint type accepted by `add_constraint()`
+  typedef Levi_civita_connection<TriangleMesh, Vertex_point_map> Connection;  ///< the connection type returned by `connection()`
+  typedef std::complex<double> Complex;  ///< the complex number type of the coefficients
   /// @}
 
   /// builds the face frames and the connection of `tm` for fields of degree `N`.

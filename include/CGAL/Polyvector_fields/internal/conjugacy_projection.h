@@ -595,6 +595,72 @@ project_onto_conjugate_pair(const std::array<double, 4>& S_row_major,
 
   impl::decompose(P);
 
+  // Fast path. With a single quadratic constraint, the global minimiser is the
+  // stationary point whose multiplier makes I + lambda H positive semidefinite,
+  // i.e. lambda in the central interval (-1/s_max, -1/s_min) between the poles
+  // of the largest and the smallest eigenvalue of H. There the secular function
+  // f(lambda) = sum_g Z_g s_g / (1 + lambda s_g)^2 decreases strictly, from +inf
+  // to -inf when y0 has a component in both extreme eigenspaces, so it has
+  // exactly one root, found by Newton safeguarded by bisection. When an extreme
+  // component is (nearly) zero the root approaches a pole (the "hard case"),
+  // and the general method below takes over.
+  {
+    const impl::Eigen_group* largest = nullptr;
+    const impl::Eigen_group* smallest = nullptr;
+    double total = 0.;
+    for(const impl::Eigen_group& g : P.groups)
+    {
+      total += g.Z;
+      if(!largest || g.s > largest->s)
+        largest = &g;
+      if(!smallest || g.s < smallest->s)
+        smallest = &g;
+    }
+    for(int col : P.kernel_columns)
+      total += P.z[col] * P.z[col];
+    if(largest && smallest && largest->s > 0. && smallest->s < 0. &&
+       largest->Z > 1e-6 * total && smallest->Z > 1e-6 * total)
+    {
+      double low = -1. / largest->s, high = -1. / smallest->s, lambda = 0.;
+      for(int iteration = 0; iteration < 200; ++iteration)
+      {
+        double f = 0., df = 0.;
+        for(const impl::Eigen_group& g : P.groups)
+        {
+          const double d = 1. + lambda * g.s;
+          f += g.Z * g.s / (d * d);
+          df -= 2. * g.Z * g.s * g.s / (d * d * d);
+        }
+        if(f == 0.)
+          break;
+        (f > 0. ? low : high) = lambda;  // f decreases: the root is right of a positive value
+        double next = lambda - f / df;
+        if(!(next > low && next < high))
+          next = 0.5 * (low + high);
+        const double step = next - lambda;
+        lambda = next;
+        if(std::abs(step) <= 4. * std::numeric_limits<double>::epsilon() * (std::abs(lambda) + 1e-300))
+          break;
+      }
+      impl::Vec4 y = {{0., 0., 0., 0.}};
+      for(int col = 0; col < 4; ++col)
+      {
+        double eigenvalue = 0.;
+        for(const impl::Eigen_group& g : P.groups)
+          for(int k = 0; k < g.count; ++k)
+            if(g.column[k] == col)
+              eigenvalue = g.s;
+        const double w = P.z[col] / (1. + lambda * eigenvalue);
+        for(int i = 0; i < 4; ++i)
+          y[i] += w * P.U[col][i];
+      }
+      impl::make_conjugate(P, y);
+      if(impl::is_finite(y))
+        return { std::complex<double>(std::ldexp(y[0], y_exponent), std::ldexp(y[1], y_exponent)),
+                 std::complex<double>(std::ldexp(y[2], y_exponent), std::ldexp(y[3], y_exponent)) };
+    }
+  }
+
   impl::Vec4 best = P.y0;
   double best_distance = std::numeric_limits<double>::infinity();
   auto consider = [&](impl::Vec4 y)

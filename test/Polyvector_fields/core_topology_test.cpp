@@ -29,24 +29,6 @@ typedef PVF::Face_constraint<Face, Vector> Constraint;
 
 namespace {
 
-std::vector<Constraint> random_constraints(const Mesh& tm, std::size_t count, std::size_t k, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::vector<Constraint> constraints;
-  std::set<std::size_t> used;
-  while(constraints.size() < count)
-  {
-    const std::size_t f = rng() % num_faces(tm);
-    if(!used.insert(f).second)
-      continue;
-    Constraint c{ Face(Mesh::size_type(f)), {} };
-    for(std::size_t i = 0; i < k; ++i)
-      c.vectors.push_back(random_vector(rng));
-    constraints.push_back(c);
-  }
-  return constraints;
-}
-
 // Designs a field and returns its singularities; also checks that every
 // interior vertex's index is an integer multiple of 1/N up to round-off.
 std::vector<PVF::Singularity<Vertex> > singularities(Mesh& tm, std::size_t N, bool sign_symmetric,

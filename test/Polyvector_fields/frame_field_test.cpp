@@ -36,20 +36,6 @@ namespace {
 
 const double degree = CGAL_PI / 180;
 
-std::vector<Constraint> random_frame_constraints(const Mesh& tm, std::size_t count, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::vector<Constraint> constraints;
-  std::set<std::size_t> used;
-  while(constraints.size() < count)
-  {
-    const std::size_t f = rng() % num_faces(tm);
-    if(used.insert(f).second)
-      constraints.push_back(Constraint{ Face(Mesh::size_type(f)), { random_vector(rng), random_vector(rng) } });
-  }
-  return constraints;
-}
-
 // Smallest angle between u and v of each face, from its coefficients.
 std::vector<double> frame_angles(const Mesh& tm, Mesh::Property_map<Face, std::vector<Complex> > c)
 {
@@ -83,7 +69,7 @@ TEST(AngleBound, BumpyAndFandisk)
   for(const std::string name : { "bumpy.off", "fandisk.off" })
   {
     Mesh tm = load(name);
-    const auto constraints = random_frame_constraints(tm, 30, 3);
+    const auto constraints = random_constraints(tm, 30, 2, 3);
     auto smooth = tm.add_property_map<Face, std::vector<Complex> >("f:smooth").first;
     auto bounded = tm.add_property_map<Face, std::vector<Complex> >("f:bounded").first;
     ASSERT_EQ(PVF::design_polyvector_field(tm, 4, constraints, smooth, PVF::parameters::sign_symmetric(true)),
@@ -302,7 +288,7 @@ TEST(Conjugate, RigidMotionAndPolyhedron)
 TEST(FrameFields, BadInput)
 {
   Mesh tm = load("bumpy.off");
-  const auto constraints = random_frame_constraints(tm, 5, 1);
+  const auto constraints = random_constraints(tm, 5, 2, 1);
   auto field = tm.add_property_map<Face, std::vector<Complex> >("f:c", std::vector<Complex>{ Complex(3) }).first;
   PVF::Angle_bound_result ab;
   PVF::Conjugate_field_result cj;

@@ -37,7 +37,11 @@
 #define PVF_DATA_DIR "/work/main/data"
 #endif
 
+#include "io_test_support.h"
+
 namespace {
+
+using namespace pvf_io_test;
 
 namespace PVF = CGAL::Polyvector_fields;
 namespace PIO = CGAL::Polyvector_fields::IO;
@@ -47,47 +51,9 @@ using PVF::Error_code;
 typedef CGAL::Simple_cartesian<double> SC;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
 
-template <typename TriangleMesh>
-TriangleMesh load_mesh(const std::string& name)
-{
-  TriangleMesh tm;
-  const bool ok = CGAL::IO::read_polygon_mesh(std::string(PVF_DATA_DIR) + "/" + name, tm);
-  if(!ok || CGAL::num_faces(tm) == 0)
-    throw std::runtime_error("cannot read " + name);
-  return tm;
-}
 
 // A fresh, empty directory for one test; removed at the end of the test.
-class Scratch_directory
-{
-public:
-  explicit Scratch_directory(const std::string& name)
-  {
-    m_path = fs::temp_directory_path() / ("pvf_io_test_" + name + "_" + std::to_string(std::random_device()()));
-    fs::remove_all(m_path);
-    fs::create_directories(m_path);
-  }
-  ~Scratch_directory() { std::error_code ec; fs::remove_all(m_path, ec); }
-  std::string file(const std::string& name) const { return (m_path / name).string(); }
-  std::set<std::string> entries() const
-  {
-    std::set<std::string> names;
-    for(const auto& entry : fs::directory_iterator(m_path))
-      names.insert(entry.path().filename().string());
-    return names;
-  }
 
-private:
-  fs::path m_path;
-};
-
-std::string file_content(const std::string& filename)
-{
-  std::ifstream in(filename, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void set_content(const std::string& filename, const std::string& content)
 {

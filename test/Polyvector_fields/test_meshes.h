@@ -16,6 +16,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/subdivision_method_3.h>
+#include <CGAL/Polyvector_fields/Face_constraint.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
@@ -25,6 +26,7 @@
 #include <stdexcept>
 #include <cmath>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -181,6 +183,25 @@ inline double set_distance(std::vector<Vector> a, std::vector<Vector> b)
     best = (std::min)(best, worst);
   } while(std::next_permutation(p.begin(), p.end()));
   return best;
+}
+
+// Hard constraints on `count` distinct random faces, each with `k` random vectors.
+inline std::vector<CGAL::Polyvector_fields::Face_constraint<Mesh::Face_index, Vector> >
+random_constraints(const Mesh& tm, std::size_t count, std::size_t k, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::vector<CGAL::Polyvector_fields::Face_constraint<Mesh::Face_index, Vector> > constraints;
+  std::set<std::size_t> used;
+  while(constraints.size() < count)
+  {
+    const std::size_t f = rng() % num_faces(tm);
+    if(!used.insert(f).second)
+      continue;
+    constraints.push_back({ Mesh::Face_index(Mesh::size_type(f)), {} });
+    for(std::size_t i = 0; i < k; ++i)
+      constraints.back().vectors.push_back(random_vector(rng));
+  }
+  return constraints;
 }
 
 } // namespace pvf_test

@@ -16,6 +16,7 @@
 #include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -220,9 +221,7 @@ public:
     const Error_code code = compute();
     if(code != Error_code::SUCCESS)
       return code;
-    for(std::size_t f = 0; f < m_connection->number_of_faces(); ++f)
-      put(coefficients, m_connection->face(f),
-          std::vector<Complex>(m_solution.begin() + std::ptrdiff_t(f * m_N), m_solution.begin() + std::ptrdiff_t((f + 1) * m_N)));
+    internal::write_coefficients(*m_connection, m_N, m_solution, coefficients);
     return Error_code::SUCCESS;
   }
 

@@ -13,6 +13,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
 #include <CGAL/Polyvector_fields/internal/angle_bound_projection.h>
+#include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/frame_field_setup.h>
 
 #include <cmath>
@@ -182,8 +183,7 @@ Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t 
   r.converged = free_angle >= theta_min - tolerance;
   r.minimum_angle = all_angle;
   r.minimum_free_angle = free_angle;
-  for(std::size_t f = 0; f < F; ++f)
-    put(coefficient_map, connection.face(f), std::vector<Complex>(c.begin() + std::ptrdiff_t(4 * f), c.begin() + std::ptrdiff_t(4 * f + 4)));
+  internal::write_coefficients(connection, 4, c, coefficient_map);
   result = r;
   return Error_code::SUCCESS;
 }

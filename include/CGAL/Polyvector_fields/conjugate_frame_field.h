@@ -15,6 +15,7 @@
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
 #include <CGAL/Polyvector_fields/internal/conjugacy_projection.h>
+#include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/frame_field_setup.h>
 
 #include <cmath>
@@ -244,8 +245,7 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
     lambda *= p.lambda_factor;
   }
   r.converged = r.free_residual < tolerance;
-  for(std::size_t f = 0; f < F; ++f)
-    put(coefficient_map, connection.face(f), std::vector<Complex>(c.begin() + std::ptrdiff_t(4 * f), c.begin() + std::ptrdiff_t(4 * f + 4)));
+  internal::write_coefficients(connection, 4, c, coefficient_map);
   result = r;
   return Error_code::SUCCESS;
 }

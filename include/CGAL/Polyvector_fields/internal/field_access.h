@@ -49,6 +49,17 @@ Error_code read_coefficients(const Connection& connection, std::size_t N, Coeffi
   return Error_code::SUCCESS;
 }
 
+// Writes a flat coefficient array (N per face, in the connection's face order)
+// into a property map, one std::vector of N coefficients per face.
+template <typename Connection, typename CoefficientMap>
+void write_coefficients(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& flat,
+                        CoefficientMap coefficients)
+{
+  for(std::size_t f = 0; f < connection.number_of_faces(); ++f)
+    put(coefficients, connection.face(f),
+        std::vector<std::complex<double> >(flat.begin() + std::ptrdiff_t(f * N), flat.begin() + std::ptrdiff_t((f + 1) * N)));
+}
+
 } // namespace internal
 } // namespace Polyvector_fields
 } // namespace CGAL

@@ -120,9 +120,14 @@ public:
   {
     classify();
     m_factorizations.clear();
+    // All blocks have one pattern: they share one fill-reducing ordering.
     const std::size_t blocks = m_coupled ? 1 : m_degrees.size();
+    const std::shared_ptr<Shared_ordering> ordering = std::make_shared<Shared_ordering>();
     for(std::size_t b = 0; b < blocks; ++b)
+    {
       m_factorizations.emplace_back(new Factorization<SolverTraits>(m_solver_prototype));
+      m_factorizations.back()->share_ordering(ordering);
+    }
     return factor_blocks(true);
   }
 
@@ -462,7 +467,9 @@ private:
   bool factor_blocks(bool analyse)
   {
     Timer timer;
-    std::vector<Sparse_matrix> matrices(m_factorizations.size());
+    // Kept alive as members: some solvers (Eigen's iterative ones) keep a reference.
+    std::vector<Sparse_matrix>& matrices = m_matrices;
+    matrices.resize(m_factorizations.size());
     for(std::size_t b = 0; b < m_factorizations.size(); ++b)
     {
       std::vector<Eigen::Triplet<Complex> > triplets;
@@ -580,6 +587,7 @@ private:
   std::vector<std::size_t> m_first_variable;
   std::size_t m_block_size = 0;
   bool m_coupled = false;
+  std::vector<Sparse_matrix> m_matrices;
   std::vector<std::unique_ptr<Factorization<SolverTraits> > > m_factorizations;
   Stage_times m_times;
 

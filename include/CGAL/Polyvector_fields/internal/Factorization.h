@@ -19,6 +19,13 @@
 // in the frame-field iterations) is only refactored numerically. Any other
 // model goes through its own `Matrix`, `Vector`, `factor()` and
 // `linear_solver()`.
+//
+// All degrees of a field share one sparsity pattern, so for Eigen's
+// SimplicialLDLT and SimplicialLLT with their default AMD ordering the
+// fill-reducing permutation, the expensive part of the symbolic analysis, is
+// computed once and shared (Shared_ordering): each degree's matrix is permuted
+// with it and factored by the same solver with the natural ordering, whose own
+// analysis is only the elimination tree.
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -27,6 +34,7 @@
 #include <complex>
 #include <cstddef>
 #include <memory>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -37,12 +45,42 @@ typedef std::complex<double> Complex;
 typedef Eigen::SparseMatrix<Complex> Sparse_matrix;
 typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Dense_vector;
 
+// A fill-reducing permutation P shared by factorizations of matrices with one
+// pattern; they factor P A P^T.
+struct Shared_ordering
+{
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P;
+  bool computed = false;
+};
+
+// Which Eigen solvers can use a shared ordering, and their natural-ordering twin.
+template <typename EigenSolver>
+struct Natural_ordering_twin
+{
+  typedef void type;
+};
+
+template <typename Matrix, int UpLo>
+struct Natural_ordering_twin<Eigen::SimplicialLDLT<Matrix, UpLo, Eigen::AMDOrdering<int> > >
+{
+  typedef Eigen::SimplicialLDLT<Matrix, UpLo, Eigen::NaturalOrdering<int> > type;
+};
+
+template <typename Matrix, int UpLo>
+struct Natural_ordering_twin<Eigen::SimplicialLLT<Matrix, UpLo, Eigen::AMDOrdering<int> > >
+{
+  typedef Eigen::SimplicialLLT<Matrix, UpLo, Eigen::NaturalOrdering<int> > type;
+};
+
 // Generic model of SparseLinearAlgebraWithFactorTraits_d.
 template <typename SolverTraits>
 class Factorization
 {
 public:
   explicit Factorization(const SolverTraits& prototype = SolverTraits()) : m_traits(prototype) {}
+
+  // The generic concept has no separate symbolic step to share.
+  void share_ordering(const std::shared_ptr<Shared_ordering>&) {}
 
   // Both steps at once: the generic concept has no separate symbolic step.
   bool analyze(const Sparse_matrix&) { return true; }
@@ -80,31 +118,71 @@ private:
 template <typename EigenSolver>
 class Factorization<CGAL::Eigen_solver_traits<EigenSolver> >
 {
+  typedef typename Natural_ordering_twin<EigenSolver>::type Twin;
+  static constexpr bool shares_ordering = !std::is_void<Twin>::value;
+  typedef typename std::conditional<shares_ordering, Twin, EigenSolver>::type Solver;
+
 public:
   explicit Factorization(const CGAL::Eigen_solver_traits<EigenSolver>& = CGAL::Eigen_solver_traits<EigenSolver>())
-    : m_solver(new EigenSolver)
+    : m_solver(new Solver)
   {}
+
+  // Factorizations of matrices with the same pattern may share one ordering.
+  void share_ordering(const std::shared_ptr<Shared_ordering>& ordering) { m_ordering = ordering; }
 
   bool analyze(const Sparse_matrix& A)
   {
-    m_solver->analyzePattern(A);
+    if constexpr(shares_ordering)
+    {
+      if(!m_ordering)
+        m_ordering = std::make_shared<Shared_ordering>();
+      if(!m_ordering->computed)
+      {
+        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+        Eigen::AMDOrdering<int>()(A, inverse);  // A holds both triangles
+        m_ordering->P = inverse.inverse();
+        m_ordering->computed = true;
+      }
+      m_solver->analyzePattern(permuted(A));
+    }
+    else
+      m_solver->analyzePattern(A);
     return m_solver->info() == Eigen::Success;
   }
 
   bool factorize(const Sparse_matrix& A)
   {
-    m_solver->factorize(A);
+    if constexpr(shares_ordering)
+      m_solver->factorize(permuted(A));
+    else
+      m_solver->factorize(A);
     return m_solver->info() == Eigen::Success;
   }
 
   bool solve(const Dense_vector& b, Dense_vector& x)
   {
-    x = m_solver->solve(b);
+    if constexpr(shares_ordering)
+    {
+      // A x = b  <=>  (P A P^T)(P x) = P b
+      const Dense_vector y = m_solver->solve(m_ordering->P * b);
+      x = m_ordering->P.inverse() * y;
+    }
+    else
+      x = m_solver->solve(b);
     return m_solver->info() == Eigen::Success;
   }
 
 private:
-  std::unique_ptr<EigenSolver> m_solver;
+  // The lower triangle of P A P^T, which the natural-ordering solver reads.
+  Sparse_matrix permuted(const Sparse_matrix& A) const
+  {
+    Sparse_matrix B(A.rows(), A.cols());
+    B.template selfadjointView<Eigen::Lower>() = A.template selfadjointView<Eigen::Lower>().twistedBy(m_ordering->P);
+    return B;
+  }
+
+  std::unique_ptr<Solver> m_solver;
+  std::shared_ptr<Shared_ordering> m_ordering;
 };
 
 } // namespace internal

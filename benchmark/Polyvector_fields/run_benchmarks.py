@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 CGAL Polyvector Fields contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Author(s): CGAL Polyvector Fields developers
+#
+# This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+# It is not part of CGAL.
+"""Configures, builds and runs the benchmark suite, then writes a Markdown table.
+
+    python3 benchmark/Polyvector_fields/run_benchmarks.py [--max-level L] [--build-dir DIR] [--out FILE] [--no-build]
+
+From the repository root. It configures a Release build with
+-DPVF_BUILD_BENCHMARKS=ON in build-bench/ (tests off), builds the benchmark
+programs, runs them (Google Benchmark JSON in build-bench/results/), runs
+pvf_peak_memory once per size and solver (one process each, so that VmHWM is
+that run's peak), and writes the table to benchmark/results.md and stdout.
+
+Sizes: bumpy.off (2,496 faces) after 1..L Loop subdivisions: 10k, 40k, 160k,
+640k faces for the default L = 4 (about 10 minutes on 2 cores); L = 5 adds
+2.56M faces (several more minutes and several GB).
+"""
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+PROGRAMS = ["pvf_design_benchmark", "pvf_frame_field_benchmark", "pvf_peak_memory"]
+# Benchmark solver name -> pvf_peak_memory argument.
+MEMORY_SOLVERS = {"SimplicialLDLT": "ldlt", "CHOLMOD": "cholmod", "CHOLMOD_METIS": "cholmod-metis"}
+
+
+def run(cmd, env=None, capture=False):
+    print("+ " + " ".join(cmd), file=sys.stderr, flush=True)
+    if capture:
+        return subprocess.run(cmd, env=env, check=True, stdout=subprocess.PIPE, text=True).stdout
+    subprocess.run(cmd, env=env, check=True)
+    return None
+
+
+def build(build_dir, jobs):
+    run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
+         "-DPVF_BUILD_BENCHMARKS=ON", "-DBUILD_TESTING=OFF"])
+    for program in PROGRAMS:
+        run(["cmake", "--build", build_dir, "--target", program, "-j", str(jobs)])
+
+
+def run_benchmark(binary, out_json, env, extra=()):
+    run([binary, "--benchmark_out=" + out_json, "--benchmark_out_format=json"] + list(extra), env=env)
+    with open(out_json) as f:
+        return json.load(f)
+
+
+def seconds(b):
+    unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
+    return b["real_time"] * unit
+
+
+def loglog_exponent(points):
+    """Least-squares slope of log(time) over log(faces)."""
+    pts = [(math.log(f), math.log(t)) for f, t in points if f > 0 and t > 0]
+    if len(pts) < 2:
+        return float("nan")
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    sxx = sum((x - mx) ** 2 for x, _ in pts)
+    sxy = sum((x - mx) * (y - my) for x, y in pts)
+    return sxy / sxx
+
+
+def fmt(x, digits=3):
+    if x is None:
+        return "-"
+    if isinstance(x, float) and math.isnan(x):
+        return "-"
+    if abs(x) >= 100:
+        return "%.0f" % x
+    return ("%." + str(digits) + "g") % x
+
+
+def split_name(name):
+    # "BM_design/CHOLMOD/3/real_time" -> ("BM_design", "CHOLMOD", "3")
+    parts = [p for p in name.split("/") if p not in ("real_time",) and not p.startswith("iterations:")]
+    return parts
+
+
+def table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    for r in rows:
+        lines.append("| " + " | ".join(str(c) for c in r) + " |")
+    return "\n".join(lines)
+
+
+def report(design, frames, memory, max_level, elapsed):
+    out = []
+    out.append("# Polyvector fields benchmark results\n")
+    out.append("Release build, %s, %d cores; bumpy.off after 1..%d Loop subdivisions; "
+               "sign-symmetric 4-PolyVector (frame field) with 1%% of the faces under hard general-frame "
+               "constraints (two active degrees). Times are wall-clock (Google Benchmark real time); "
+               "suite ran in %s s.\n" % (time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+                                            os.cpu_count() or 0, max_level, "%.0f" % elapsed if elapsed == elapsed else "?"))
+    load = design.get("context", {}).get("load_avg")
+    if load:
+        out.append("Load average when the design benchmarks started: %s (a figure above 0 means other "
+                   "processes shared the cores, and wall-clock times are inflated).\n"
+                   % ", ".join("%.2f" % x for x in load))
+    benches = [b for b in design["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+
+    # End to end and stages.
+    rows, fits = [], {}
+    mem = {(m["solver"], int(m["faces"])): m for m in memory}
+    for b in benches:
+        p = split_name(b["name"])
+        if p[0] != "BM_design" or "error_occurred" in b:
+            continue
+        solver, faces = p[1], int(b["faces"])
+        total = seconds(b)
+        fits.setdefault(solver, []).append((faces, total))
+        m = mem.get((MEMORY_SOLVERS.get(solver, ""), faces))
+        rows.append([faces, solver, fmt(total), fmt(b["connection_s"]), fmt(b["assembly_s"]),
+                     fmt(b["factorization_s"]), fmt(b["solve_s"]), fmt(b["roots_s"]), int(b.get("degrees", 0)),
+                     fmt(faces / total / 1e3) if total > 0 else "-",
+                     fmt(m["peak_kb"] / 1024.0) if m else "-", fmt(m["design_peak_kb"] / 1024.0) if m else "-"])
+    rows.sort(key=lambda r: (r[1], r[0]))
+    out.append("## Design, end to end (frames, assembly, factorization, solves, roots)\n")
+    out.append(table(["faces", "solver", "total s", "connection s", "assembly s", "factorization s", "solve s",
+                      "roots s", "degrees", "kfaces/s", "peak MB", "design peak MB"], rows))
+    out.append("\nSolvers: SimplicialLDLT is the package default (`Default_sparse_solver`); CHOLMOD is "
+               "`Cholmod_sparse_solver` (supernodal LL^*, CHOLMOD's default ordering); CHOLMOD_METIS is a "
+               "benchmark-only variant forcing METIS nested dissection. CHOLMOD uses the system BLAS.\n")
+    out.append("Peak memory: `pvf_peak_memory` runs one design per process; it resets the kernel's "
+               "peak-RSS mark after generating the mesh (`/proc/self/clear_refs`), so *peak MB* is VmHWM of "
+               "the process during the design (mesh and libraries included) and *design peak MB* is that "
+               "minus VmRSS just before the design.\n")
+    out.append("Log-log fit exponent of end-to-end time over faces (all sizes in the table):\n")
+    for solver, pts in sorted(fits.items()):
+        out.append("- %s: **%.2f** (%s faces)" % (solver, loglog_exponent(pts),
+                                                  ", ".join(str(f) for f, _ in sorted(pts))))
+        big = [p for p in pts if p[0] >= 100000]
+        if len(big) >= 2:
+            out.append("  - over >= 100k faces only: %.2f" % loglog_exponent(big))
+    out.append("")
+
+    # Other size-dependent benchmarks.
+    rows = []
+    for b in benches:
+        p = split_name(b["name"])
+        if p[0] in ("BM_connection", "BM_resolve", "BM_singularities"):
+            if "error_occurred" in b:
+                rows.append([p[0], p[1] if len(p) > 2 else "", "-", "error: " + b.get("error_message", "")])
+                continue
+            label = p[1] if p[0] == "BM_resolve" else ""
+            extra = ""
+            if p[0] == "BM_resolve":
+                extra = "triangular solves %s s" % fmt(b["solve_s"])
+            elif p[0] == "BM_singularities":
+                extra = "%d singularities" % int(b["singularities"])
+            rows.append([p[0], label, int(b["faces"]), fmt(seconds(b)), extra])
+    out.append("## Stages measured alone\n")
+    out.append("`BM_connection`: face frames + Levi-Civita connection. `BM_resolve`: new constraint values on the "
+               "same faces (factorization reused; right-hand sides, solves, copy-out). `BM_singularities`: the "
+               "public `compute_singularities()` (it rebuilds its own connection).\n")
+    out.append(table(["benchmark", "solver", "faces", "time s", "notes"], rows))
+    out.append("")
+
+    rows = []
+    for b in benches:
+        p = split_name(b["name"])
+        if p[0].startswith("BM_roots"):
+            rows.append([p[0], int(p[1]), fmt(seconds(b) * 1e3), fmt(b["items_per_second"] / 1e6)])
+    out.append("## Root extraction kernel (`polyvector_roots`, pointer form, N = 4)\n")
+    out.append("`sign_symmetric`: closed form; `general`: companion-matrix path on the same kind of input "
+               "(odd coefficients slightly nonzero).\n")
+    out.append(table(["benchmark", "faces", "time ms", "Mfaces/s"], rows))
+    out.append("")
+
+    rows = []
+    for b in frames["benchmarks"]:
+        if b.get("run_type", "iteration") != "iteration":
+            continue
+        p = split_name(b["name"])
+        if "error_occurred" in b:
+            rows.append([p[0], p[1], "-", "-", "-", "-", "error: " + b.get("error_message", "")])
+            continue
+        if p[0] == "BM_conjugate_per_iteration":
+            rows.append([p[0], p[1], int(b["faces"]), "-", "-", "-",
+                         "per iteration %s s (first step incl. setup and curvature: %s s)"
+                         % (fmt(b["per_iteration_s"]), fmt(b["first_step_total_s"]))])
+        else:
+            note = ("residual %s" % fmt(b["residual"])) if "residual" in b else \
+                   ("min free angle %s deg" % fmt(b.get("min_free_angle_deg", float("nan"))))
+            rows.append([p[0], p[1], int(b["faces"]), fmt(seconds(b)), int(b["iterations"]),
+                         "yes" if b["converged"] else "no", note])
+    out.append("## Frame-field algorithms to convergence\n")
+    out.append(table(["benchmark", "solver", "faces", "time s", "iterations", "converged", "notes"], rows))
+    out.append("")
+    return "\n".join(out)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--max-level", type=int, default=4, help="highest subdivision level (4: 640k faces, 5: 2.56M)")
+    ap.add_argument("--build-dir", default=os.path.join(ROOT, "build-bench"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "benchmark", "results.md"))
+    ap.add_argument("--jobs", type=int, default=2, help="parallel compile jobs (one CGAL TU takes ~1.3 GB)")
+    ap.add_argument("--no-build", action="store_true", help="use the programs already built")
+    ap.add_argument("--filter", default="", help="--benchmark_filter for pvf_design_benchmark")
+    ap.add_argument("--report-only", action="store_true",
+                    help="rewrite the table from the JSON files of the last run (build-dir/results)")
+    args = ap.parse_args()
+
+    start = time.time()
+    resdir = os.path.join(args.build_dir, "results")
+    if args.report_only:
+        loaded = []
+        for name in ("design.json", "frames.json", "memory.json"):
+            with open(os.path.join(resdir, name)) as f:
+                loaded.append(json.load(f))
+        text = report(loaded[0], loaded[1], loaded[2], args.max_level, float("nan"))
+        with open(args.out, "w") as f:
+            f.write(text + "\n")
+        print(text)
+        return
+    if not args.no_build:
+        build(args.build_dir, args.jobs)
+    bindir = os.path.join(args.build_dir, "benchmark", "Polyvector_fields")
+    os.makedirs(resdir, exist_ok=True)
+    env = dict(os.environ, PVF_BENCH_MAX_LEVEL=str(args.max_level))
+
+    extra = ["--benchmark_filter=" + args.filter] if args.filter else []
+    design = run_benchmark(os.path.join(bindir, "pvf_design_benchmark"), os.path.join(resdir, "design.json"), env, extra)
+    frames = run_benchmark(os.path.join(bindir, "pvf_frame_field_benchmark"), os.path.join(resdir, "frames.json"), env)
+
+    solvers = ["ldlt"]
+    if any("CHOLMOD" in b["name"] for b in design["benchmarks"]):
+        solvers += ["cholmod", "cholmod-metis"]
+    memory = []
+    for level in range(1, args.max_level + 1):
+        for solver in solvers:
+            line = run([os.path.join(bindir, "pvf_peak_memory"), str(level), solver], env=env, capture=True)
+            entry = dict(kv.split("=", 1) for kv in line.split())
+            for key in ("faces", "mesh_rss_kb", "peak_kb", "design_peak_kb", "hwm_reset"):
+                entry[key] = int(entry[key])
+            memory.append(entry)
+    with open(os.path.join(resdir, "memory.json"), "w") as f:
+        json.dump(memory, f, indent=1)
+
+    text = report(design, frames, memory, args.max_level, time.time() - start)
+    with open(args.out, "w") as f:
+        f.write(text + "\n")
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

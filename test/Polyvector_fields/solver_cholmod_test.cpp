@@ -1,0 +1,254 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+// The fast solver paths against a simple one: the same designed fields with
+// CHOLMOD (Cholmod_sparse_solver), Eigen's SimplicialLDLT (Default_sparse_solver)
+// and a dense reference (Eigen's dense LDLT of the same matrix, through a
+// SparseLinearAlgebraWithFactorTraits_d model written here) agree to 1e-10
+// relative to the size of the field, on small meshes.
+
+#include <CGAL/Polyvector_fields/Cholmod_solver.h>
+#include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
+#include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <Eigen/Dense>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <map>
+#include <random>
+#include <vector>
+
+namespace {
+
+namespace PVF = CGAL::Polyvector_fields;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef Kernel::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+typedef PVF::Face_constraint<face_descriptor, Vector_3> Constraint;
+typedef std::complex<double> Complex;
+
+// A dense model of SparseLinearAlgebraWithFactorTraits_d on complex numbers:
+// the whole matrix is stored and factored by Eigen's dense LDLT (Hermitian,
+// pivoting). Only for small systems.
+class Dense_LDLT_traits
+{
+public:
+  typedef Complex NT;
+  class Matrix
+  {
+  public:
+    Matrix(std::size_t rows, std::size_t cols) : m(Eigen::MatrixXcd::Zero(Eigen::Index(rows), Eigen::Index(cols))) {}
+    void add_coef(std::size_t i, std::size_t j, const NT& value) { m(Eigen::Index(i), Eigen::Index(j)) += value; }
+    void set_coef(std::size_t i, std::size_t j, const NT& value, bool = false) { m(Eigen::Index(i), Eigen::Index(j)) = value; }
+    std::size_t row_dimension() const { return std::size_t(m.rows()); }
+    std::size_t column_dimension() const { return std::size_t(m.cols()); }
+    Eigen::MatrixXcd m;
+  };
+  typedef std::vector<NT> Vector;
+
+  bool factor(const Matrix& A, NT& D)
+  {
+    m_ldlt.compute(A.m);
+    D = NT(1);
+    return m_ldlt.info() == Eigen::Success && m_ldlt.isPositive();
+  }
+  bool linear_solver(const Vector& b, Vector& x)
+  {
+    const Eigen::VectorXcd B = Eigen::Map<const Eigen::VectorXcd>(b.data(), Eigen::Index(b.size()));
+    const Eigen::VectorXcd X = m_ldlt.solve(B);
+    x.assign(X.data(), X.data() + X.size());
+    return m_ldlt.info() == Eigen::Success;
+  }
+
+private:
+  Eigen::LDLT<Eigen::MatrixXcd> m_ldlt;
+};
+
+// A closed surface (icosahedron after two Loop subdivisions: 320 faces, projected
+// onto the unit sphere then made bumpy) and an open one (a 12 x 10 grid with a height field).
+Mesh closed_mesh()
+{
+  Mesh tm;
+  CGAL::make_icosahedron<Mesh, Point_3>(tm, Point_3(0, 0, 0), 1.0);
+  CGAL::Subdivision_method_3::Loop_subdivision(tm, CGAL::parameters::number_of_iterations(2));
+  for(auto v : tm.vertices())
+  {
+    const Vector_3 p = tm.point(v) - CGAL::ORIGIN;
+    const double r = std::sqrt(p.squared_length());
+    const double bump = 1.0 + 0.15 * std::sin(3 * p.x() / r) * std::cos(2 * p.y() / r);
+    tm.point(v) = CGAL::ORIGIN + (bump / r) * p;
+  }
+  return tm;
+}
+
+Mesh open_mesh()
+{
+  Mesh tm;
+  CGAL::make_grid(12, 10, tm, [](std::size_t i, std::size_t j) {
+    const double x = double(i) / 12, y = double(j) / 10;
+    return Point_3(x, y, 0.2 * std::sin(4 * x) * std::cos(3 * y));
+  }, true);
+  return tm;
+}
+
+// Hard constraints on `count` faces (faces spread over the mesh), general frames
+// {±u, ±v} when sign-symmetric, N independent vectors otherwise, some soft.
+std::vector<Constraint> constraints_for(const Mesh& tm, std::size_t N, bool sign_symmetric, std::size_t count,
+                                        std::size_t partial = 0)
+{
+  std::vector<face_descriptor> faces(tm.faces().begin(), tm.faces().end());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> angle(0, 2 * CGAL_PI), length(0.5, 1.5);
+  std::vector<Constraint> constraints;
+  const std::size_t step = faces.size() / count;
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    const face_descriptor f = faces[i * step];
+    const auto h = tm.halfedge(f);
+    const Vector_3 a = tm.point(tm.target(h)) - tm.point(tm.source(h));
+    const Vector_3 b = tm.point(tm.target(tm.next(h))) - tm.point(tm.source(h));
+    const Vector_3 n = CGAL::cross_product(a, b);
+    const Vector_3 e1 = a / std::sqrt(a.squared_length());
+    Vector_3 e2 = CGAL::cross_product(n, a);
+    e2 = e2 / std::sqrt(e2.squared_length());
+    std::size_t k = sign_symmetric ? N / 2 : N;
+    if(i < partial)
+      k = 1;
+    Constraint c;
+    c.face = f;
+    for(std::size_t j = 0; j < k; ++j)
+    {
+      const double t = angle(rng);
+      c.vectors.push_back(length(rng) * (std::cos(t) * e1 + std::sin(t) * e2));
+    }
+    if(i % 3 == 2)
+      c.weight = 10.0;  // soft
+    constraints.push_back(c);
+  }
+  return constraints;
+}
+
+template <typename Solver>
+std::vector<Complex> design(const Mesh& tm, std::size_t N, bool sign_symmetric, const std::vector<Constraint>& constraints)
+{
+  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver> designer(
+    tm, N, PVF::parameters::sign_symmetric(sign_symmetric));
+  EXPECT_EQ(designer.status(), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(designer.add_constraints(constraints), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
+  return designer.coefficient_array();
+}
+
+// max |a - b| / max |a|
+double relative_difference(const std::vector<Complex>& a, const std::vector<Complex>& b)
+{
+  EXPECT_EQ(a.size(), b.size());
+  double diff = 0, size = 0;
+  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    diff = (std::max)(diff, std::abs(a[i] - b[i]));
+    size = (std::max)(size, std::abs(a[i]));
+  }
+  return size > 0 ? diff / size : diff;
+}
+
+struct Case
+{
+  const char* name;
+  bool closed;
+  std::size_t N;
+  bool sign_symmetric;
+  std::size_t count, partial;
+};
+
+const Case cases[] = {
+  { "frame field, closed", true, 4, true, 12, 0 },
+  { "frame field, open, partial", false, 4, true, 10, 4 },
+  { "N = 3, closed, partial", true, 3, false, 8, 3 },
+  { "N = 6, open", false, 6, false, 6, 0 },
+};
+
+TEST(SolverAgreement, SimplicialLDLTMatchesDenseLDLT)
+{
+  for(const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const Mesh tm = c.closed ? closed_mesh() : open_mesh();
+    const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
+    const auto dense = design<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = design<PVF::Default_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
+    ASSERT_EQ(dense.size(), tm.number_of_faces() * c.N);
+    EXPECT_LT(relative_difference(dense, ldlt), 1e-10);
+    // The field is not trivial: a zero field would agree with anything.
+    double largest = 0;
+    for(const Complex& z : dense)
+      largest = (std::max)(largest, std::abs(z));
+    EXPECT_GT(largest, 0.1);
+  }
+}
+
+TEST(SolverAgreement, CholmodMatchesSimplicialLDLTAndDense)
+{
+#ifndef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+  GTEST_SKIP() << "CHOLMOD is not available in this build";
+#else
+  for(const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const Mesh tm = c.closed ? closed_mesh() : open_mesh();
+    const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
+    const auto dense = design<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = design<PVF::Default_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto cholmod = design<PVF::Cholmod_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
+    EXPECT_LT(relative_difference(dense, cholmod), 1e-10);
+    EXPECT_LT(relative_difference(ldlt, cholmod), 1e-10);
+  }
+#endif
+}
+
+// The iterations refactor numerically with a new lambda at every step: the
+// CHOLMOD path (symbolic analysis kept) must follow the SimplicialLDLT one.
+TEST(SolverAgreement, CholmodAngleBoundMatchesSimplicialLDLT)
+{
+#ifndef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+  GTEST_SKIP() << "CHOLMOD is not available in this build";
+#else
+  const Mesh tm = closed_mesh();
+  const auto constraints = constraints_for(tm, 4, true, 12);
+  std::map<face_descriptor, std::vector<Complex> > a, b;
+  PVF::Angle_bound_result ra, rb;
+  ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, boost::make_assoc_property_map(a), ra),
+            PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::design_angle_bounded_frame_field(
+              tm, 4, constraints, boost::make_assoc_property_map(b), rb,
+              CGAL::parameters::sparse_linear_solver(PVF::Cholmod_sparse_solver())),
+            PVF::Error_code::SUCCESS);
+  EXPECT_GT(ra.iterations, 0u);
+  EXPECT_EQ(ra.iterations, rb.iterations);
+  std::vector<Complex> ca, cb;
+  for(face_descriptor f : tm.faces())
+  {
+    ASSERT_EQ(a[f].size(), 4u);
+    ASSERT_EQ(b[f].size(), 4u);
+    ca.insert(ca.end(), a[f].begin(), a[f].end());
+    cb.insert(cb.end(), b[f].begin(), b[f].end());
+  }
+  EXPECT_LT(relative_difference(ca, cb), 1e-10);
+#endif
+}
+
+} // namespace

@@ -34,6 +34,11 @@ if(NOT TARGET CGAL::Polyvector_fields_CHOLMOD_support)
       endif()
     endforeach()
     list(APPEND _pvf_cholmod_libraries "${PVF_SUITESPARSECONFIG_LIBRARY}")
+    # dlsym(), with which the package finds OpenBLAS's thread control (in libc
+    # since glibc 2.34; libdl before).
+    if(CMAKE_DL_LIBS)
+      list(APPEND _pvf_cholmod_libraries ${CMAKE_DL_LIBS})
+    endif()
 
     add_library(CGAL::Polyvector_fields_CHOLMOD_support INTERFACE IMPORTED)
     set_target_properties(CGAL::Polyvector_fields_CHOLMOD_support PROPERTIES

@@ -20,6 +20,7 @@
 
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
+#include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -198,12 +199,12 @@ inline double seconds_since(std::chrono::steady_clock::time_point start)
 // and connection, assembly, factorization, solves, and the 4 world-space
 // vectors of every face (closed-form roots mapped out of the face frames).
 // Exits on failure: a benchmark that failed has no figure to report.
-template <typename Solver>
+template <typename Solver, typename ConcurrencyTag = CGAL::Parallel_if_available_tag>
 End_to_end_times design_end_to_end(const Mesh& tm, const std::vector<Constraint>& constraints,
                                    std::vector<Complex>* coefficients = nullptr,
                                    std::vector<std::array<double, 3> >* world_roots = nullptr)
 {
-  typedef PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver> Designer;
+  typedef PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver, ConcurrencyTag> Designer;
   End_to_end_times t;
   const auto start = std::chrono::steady_clock::now();
   Designer designer(tm, 4, PVF::parameters::sign_symmetric(true));
@@ -219,13 +220,13 @@ End_to_end_times design_end_to_end(const Mesh& tm, const std::vector<Constraint>
   std::vector<std::array<double, 3> > local_roots;
   std::vector<std::array<double, 3> >& world = world_roots ? *world_roots : local_roots;
   world.resize(4 * F);
-  Complex roots[4];
+  std::vector<Complex> roots;
+  PVF::internal::field_roots<ConcurrencyTag>(c, 4, true, roots);  // what compute_field_roots() does
   for(std::size_t f = 0; f < F; ++f)
   {
-    PVF::polyvector_roots(c.data() + 4 * f, 4, roots, true);
     const PVF::Face_frame& frame = designer.connection().frame(f);
     for(std::size_t k = 0; k < 4; ++k)
-      world[4 * f + k] = frame.to_world(roots[k]);
+      world[4 * f + k] = frame.to_world(roots[4 * f + k]);
   }
   t.roots = seconds_since(roots_start);
   t.total = seconds_since(start);

@@ -24,7 +24,17 @@ namespace {
 
 using namespace pvf_bench;
 
+// Levels 1..4 (10k to 640k faces) for every variant; the package's default
+// (CHOLMOD, parallel) also runs the levels above (level 5: 2.56M faces) when
+// PVF_BENCH_MAX_LEVEL asks for them.
 void level_arguments(benchmark::internal::Benchmark* b)
+{
+  for(int level = 1; level <= (std::min)(4, max_level()); ++level)
+    b->Arg(level);
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+void all_level_arguments(benchmark::internal::Benchmark* b)
 {
   for(int level = 1; level <= max_level(); ++level)
     b->Arg(level);
@@ -47,7 +57,7 @@ BENCHMARK(BM_connection)->Apply(level_arguments);
 
 // End to end, with the designer's own stage times as counters (seconds, mean
 // over the iterations).
-template <typename Solver>
+template <typename Solver, typename ConcurrencyTag>
 void BM_design(benchmark::State& state)
 {
   const Mesh& tm = bumpy(int(state.range(0)));
@@ -55,7 +65,7 @@ void BM_design(benchmark::State& state)
   End_to_end_times sum;
   for(auto _ : state)
   {
-    const End_to_end_times t = design_end_to_end<Solver>(tm, constraints);
+    const End_to_end_times t = design_end_to_end<Solver, ConcurrencyTag>(tm, constraints);
     sum.degrees = t.degrees;
     sum.connection += t.connection;
     sum.assembly += t.assembly;
@@ -74,10 +84,17 @@ void BM_design(benchmark::State& state)
   state.counters["roots_s"] = sum.roots / n;
   state.SetItemsProcessed(state.iterations() * int64_t(tm.number_of_faces()));
 }
-BENCHMARK_TEMPLATE(BM_design, PVF::Default_sparse_solver)->Name("BM_design/SimplicialLDLT")->Apply(level_arguments);
+// Sequential and parallel (independent degrees factored at the same time, TBB).
+BENCHMARK_TEMPLATE(BM_design, PVF::Simplicial_ldlt_solver, CGAL::Sequential_tag)->Name("BM_design/SimplicialLDLT")->Apply(level_arguments);
+#ifdef CGAL_LINKED_WITH_TBB
+BENCHMARK_TEMPLATE(BM_design, PVF::Simplicial_ldlt_solver, CGAL::Parallel_tag)->Name("BM_design/SimplicialLDLT_parallel")->Apply(level_arguments);
+#endif
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
-BENCHMARK_TEMPLATE(BM_design, PVF::Cholmod_sparse_solver)->Name("BM_design/CHOLMOD")->Apply(level_arguments);
-BENCHMARK_TEMPLATE(BM_design, Cholmod_metis_solver)->Name("BM_design/CHOLMOD_METIS")->Apply(level_arguments);
+BENCHMARK_TEMPLATE(BM_design, PVF::Cholmod_sparse_solver, CGAL::Sequential_tag)->Name("BM_design/CHOLMOD")->Apply(level_arguments);
+#ifdef CGAL_LINKED_WITH_TBB
+BENCHMARK_TEMPLATE(BM_design, PVF::Cholmod_sparse_solver, CGAL::Parallel_tag)->Name("BM_design/CHOLMOD_parallel")->Apply(all_level_arguments);
+#endif
+BENCHMARK_TEMPLATE(BM_design, Cholmod_metis_solver, CGAL::Sequential_tag)->Name("BM_design/CHOLMOD_METIS")->Apply(level_arguments);
 #endif
 
 // New constraint values on the same faces: the factorization is reused, so
@@ -117,7 +134,7 @@ void BM_resolve(benchmark::State& state)
   state.counters["faces"] = double(tm.number_of_faces());
   state.counters["solve_s"] = solve / double(state.iterations());
 }
-BENCHMARK_TEMPLATE(BM_resolve, PVF::Default_sparse_solver)->Name("BM_resolve/SimplicialLDLT")->Apply(level_arguments);
+BENCHMARK_TEMPLATE(BM_resolve, PVF::Simplicial_ldlt_solver)->Name("BM_resolve/SimplicialLDLT")->Apply(level_arguments);
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 BENCHMARK_TEMPLATE(BM_resolve, PVF::Cholmod_sparse_solver)->Name("BM_resolve/CHOLMOD")->Apply(level_arguments);
 #endif
@@ -156,6 +173,28 @@ void BM_roots_sign_symmetric(benchmark::State& state)
 }
 BENCHMARK(BM_roots_sign_symmetric)->Arg(10000)->Arg(640000)->Arg(2560000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Root extraction of a whole field (the loop of compute_field_roots(), face
+// frame roots of F faces), sequential and with the faces shared among threads.
+template <typename ConcurrencyTag>
+void BM_field_roots(benchmark::State& state)
+{
+  const std::size_t F = std::size_t(state.range(0));
+  const std::vector<Complex> c = random_frame_coefficients(F, false);
+  std::vector<Complex> roots(4 * F);  // allocated (and its pages touched) outside the timing, as in BM_roots_*
+  for(auto _ : state)
+  {
+    PVF::internal::field_roots<ConcurrencyTag>(c, 4, true, roots);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(F));
+}
+BENCHMARK_TEMPLATE(BM_field_roots, CGAL::Sequential_tag)->Name("BM_field_roots_sign_symmetric/sequential")
+  ->Arg(640000)->Arg(2560000)->Unit(benchmark::kMillisecond)->UseRealTime();
+#ifdef CGAL_LINKED_WITH_TBB
+BENCHMARK_TEMPLATE(BM_field_roots, CGAL::Parallel_tag)->Name("BM_field_roots_sign_symmetric/parallel")
+  ->Arg(640000)->Arg(2560000)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+
 // The general N = 4 kernel (companion matrix) on the same kind of input.
 void BM_roots_general(benchmark::State& state)
 {
@@ -181,7 +220,7 @@ void BM_singularities(benchmark::State& state)
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
   design_end_to_end<PVF::Cholmod_sparse_solver>(tm, random_frame_constraints(tm), &c);
 #else
-  design_end_to_end<PVF::Default_sparse_solver>(tm, random_frame_constraints(tm), &c);
+  design_end_to_end<PVF::Simplicial_ldlt_solver>(tm, random_frame_constraints(tm), &c);
 #endif
   Mesh copy = tm;  // property maps are added to a copy, not to the cached mesh
   auto coefficients = copy.add_property_map<face_descriptor, std::vector<Complex> >("f:pvf_coefficients").first;

@@ -67,7 +67,7 @@ void BM_conjugate_inspired(benchmark::State& state)
   state.counters["converged"] = result.converged ? 1 : 0;
   state.counters["residual"] = result.free_residual;
 }
-BENCHMARK_TEMPLATE(BM_conjugate_inspired, PVF::Default_sparse_solver)
+BENCHMARK_TEMPLATE(BM_conjugate_inspired, PVF::Simplicial_ldlt_solver)
   ->Name("BM_conjugate_inspired/SimplicialLDLT")->Unit(benchmark::kMillisecond)->UseRealTime();
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 BENCHMARK_TEMPLATE(BM_conjugate_inspired, PVF::Cholmod_sparse_solver)
@@ -107,11 +107,11 @@ void BM_conjugate_per_iteration(benchmark::State& state)
   state.counters["first_step_total_s"] = one;
   state.counters["per_iteration_s"] = (six - one) / 5;
 }
-BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Default_sparse_solver)
-  ->Name("BM_conjugate_per_iteration/SimplicialLDLT")->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Simplicial_ldlt_solver)
+  ->Name("BM_conjugate_per_iteration/SimplicialLDLT")->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Cholmod_sparse_solver)
-  ->Name("BM_conjugate_per_iteration/CHOLMOD")->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+  ->Name("BM_conjugate_per_iteration/CHOLMOD")->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 #endif
 
 template <typename Solver>
@@ -138,7 +138,7 @@ void BM_angle_bound_bumpy(benchmark::State& state)
   state.counters["converged"] = result.converged ? 1 : 0;
   state.counters["min_free_angle_deg"] = result.minimum_free_angle * 180.0 / CGAL_PI;
 }
-BENCHMARK_TEMPLATE(BM_angle_bound_bumpy, PVF::Default_sparse_solver)
+BENCHMARK_TEMPLATE(BM_angle_bound_bumpy, PVF::Simplicial_ldlt_solver)
   ->Name("BM_angle_bound_bumpy/SimplicialLDLT")->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 BENCHMARK_TEMPLATE(BM_angle_bound_bumpy, PVF::Cholmod_sparse_solver)

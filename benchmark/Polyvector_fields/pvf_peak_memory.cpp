@@ -7,8 +7,9 @@
 
 // Peak memory of one end-to-end design, measured in a process of its own:
 //
-//   pvf_peak_memory LEVEL [ldlt|cg|cholmod|cholmod-metis]
+//   pvf_peak_memory LEVEL [ldlt|cg|cholmod|cholmod-metis] [parallel|sequential]
 //
+// (default: ldlt, parallel; parallel means CGAL::Parallel_if_available_tag)
 // (cg and cholmod-metis are proposals measured here, not solvers of the package;
 // cg also prints the relative difference of its field to the SimplicialLDLT one)
 //
@@ -34,11 +35,18 @@ int main(int argc, char** argv)
   using namespace pvf_bench;
   if(argc < 2)
   {
-    std::cerr << "usage: " << argv[0] << " LEVEL [ldlt|cg|cholmod|cholmod-metis]\n";
+    std::cerr << "usage: " << argv[0] << " LEVEL [ldlt|cg|cholmod|cholmod-metis] [parallel|sequential]\n";
     return EXIT_FAILURE;
   }
   const int level = std::atoi(argv[1]);
   const std::string solver = argc > 2 ? argv[2] : "ldlt";
+  const std::string mode = argc > 3 ? argv[3] : "parallel";
+  if(mode != "parallel" && mode != "sequential")
+  {
+    std::cerr << "unknown mode " << mode << " (parallel or sequential)\n";
+    return EXIT_FAILURE;
+  }
+  const bool sequential = (mode == "sequential");
 #ifndef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
   if(solver != "ldlt" && solver != "cg")
   {
@@ -58,9 +66,11 @@ int main(int argc, char** argv)
   End_to_end_times t;
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
   if(solver == "cholmod")
-    t = design_end_to_end<CGAL::Polyvector_fields::Cholmod_sparse_solver>(tm, constraints);
+    t = sequential ? design_end_to_end<CGAL::Polyvector_fields::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, constraints)
+                   : design_end_to_end<CGAL::Polyvector_fields::Cholmod_sparse_solver>(tm, constraints);
   else if(solver == "cholmod-metis")
-    t = design_end_to_end<Cholmod_metis_solver>(tm, constraints);
+    t = sequential ? design_end_to_end<Cholmod_metis_solver, CGAL::Sequential_tag>(tm, constraints)
+                   : design_end_to_end<Cholmod_metis_solver>(tm, constraints);
   else
 #endif
   if(solver == "cg")
@@ -69,7 +79,7 @@ int main(int argc, char** argv)
     std::vector<Complex> iterative, direct;
     t = design_end_to_end<Preconditioned_cg_solver>(tm, constraints, &iterative);
     const long peak = status_kb("VmHWM");
-    design_end_to_end<CGAL::Polyvector_fields::Default_sparse_solver>(tm, constraints, &direct);
+    design_end_to_end<CGAL::Polyvector_fields::Simplicial_ldlt_solver>(tm, constraints, &direct);
     double diff = 0, size = 0;
     for(std::size_t i = 0; i < direct.size(); ++i)
     {
@@ -83,10 +93,12 @@ int main(int argc, char** argv)
     return EXIT_SUCCESS;
   }
   else
-    t = design_end_to_end<CGAL::Polyvector_fields::Default_sparse_solver>(tm, constraints);
+    t = sequential ? design_end_to_end<CGAL::Polyvector_fields::Simplicial_ldlt_solver, CGAL::Sequential_tag>(tm, constraints)
+                   : design_end_to_end<CGAL::Polyvector_fields::Simplicial_ldlt_solver>(tm, constraints);
   const long peak = status_kb("VmHWM");
-  std::cout << "solver=" << solver << " level=" << level << " faces=" << t.faces << " seconds=" << t.total
-            << " factorization_s=" << t.factorization
+  std::cout << "solver=" << solver << " mode=" << mode << " level=" << level << " faces=" << t.faces << " seconds=" << t.total
+            << " connection_s=" << t.connection << " assembly_s=" << t.assembly
+            << " factorization_s=" << t.factorization << " solve_s=" << t.solve << " roots_s=" << t.roots
             << " mesh_rss_kb=" << before << " peak_kb=" << peak << " design_peak_kb=" << (peak - before)
             << " hwm_reset=" << (reset ? 1 : 0) << std::endl;
   return EXIT_SUCCESS;

@@ -16,8 +16,8 @@ pvf_peak_memory once per size and solver (one process each, so that VmHWM is
 that run's peak), and writes the table to benchmark/results.md and stdout.
 
 Sizes: bumpy.off (2,496 faces) after 1..L Loop subdivisions: 10k, 40k, 160k,
-640k faces for the default L = 4 (about 10 minutes on 2 cores); L = 5 adds
-2.56M faces (several more minutes and several GB).
+640k faces for the default L = 4 (about 12 minutes on 2 cores); L = 5 adds
+2.56M faces for the default solver only (a few more minutes and about 6 GB).
 """
 
 import argparse
@@ -30,8 +30,12 @@ import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 PROGRAMS = ["pvf_design_benchmark", "pvf_frame_field_benchmark", "pvf_peak_memory"]
-# Benchmark solver name -> pvf_peak_memory argument.
-MEMORY_SOLVERS = {"SimplicialLDLT": "ldlt", "CHOLMOD": "cholmod", "CHOLMOD_METIS": "cholmod-metis"}
+# Benchmark solver name -> pvf_peak_memory arguments (solver, mode).
+MEMORY_SOLVERS = {"SimplicialLDLT": ("ldlt", "sequential"), "SimplicialLDLT_parallel": ("ldlt", "parallel"),
+                  "CHOLMOD": ("cholmod", "sequential"), "CHOLMOD_parallel": ("cholmod", "parallel"),
+                  "CHOLMOD_METIS": ("cholmod-metis", "sequential")}
+# The package's default when CHOLMOD and TBB are found.
+DEFAULT_SOLVER = "CHOLMOD_parallel"
 
 
 def run(cmd, env=None, capture=False):
@@ -95,6 +99,71 @@ def table(header, rows):
     return "\n".join(lines)
 
 
+def blas_name():
+    """The library behind libblas.so.3 (Debian alternatives), for the record."""
+    try:
+        path = os.path.realpath("/usr/lib/x86_64-linux-gnu/libblas.so.3")
+        return "OpenBLAS (%s)" % path if "openblas" in path else path
+    except OSError:
+        return "unknown"
+
+
+def targets(design, frames, memory):
+    """Lines comparing the issue's targets with the measured figures (default solver)."""
+    benches = [b for b in design["benchmarks"] if b.get("run_type", "iteration") == "iteration"
+               and "error_occurred" not in b]
+    rows = {}
+    for b in benches:
+        p = split_name(b["name"])
+        if p[0] == "BM_design" and p[1] == DEFAULT_SOLVER:
+            rows[int(b["faces"])] = seconds(b)
+    mem = {int(m["faces"]): m for m in memory if (m["solver"], m.get("mode")) == MEMORY_SOLVERS[DEFAULT_SOLVER]}
+    out = ["## Targets (issue 4) against the package default (%s)\n" % DEFAULT_SOLVER]
+    if not rows:
+        return out + ["(the default solver did not run)\n"]
+    lines = []
+    big = [f for f in rows if 500000 <= f <= 800000]
+    for f in big:
+        m = mem.get(f)
+        lines.append("- design at %d faces: **%s s** (target <= 5 s), peak **%s MB** (target <= 1024 MB)"
+                     % (f, fmt(rows[f]), fmt(m["design_peak_kb"] / 1024.0) if m else "-"))
+    pts = sorted(rows.items())
+    if len(pts) >= 2:
+        lines.append("- log-log exponent of time over faces, %d..%d faces: **%.2f** (1 = linear)"
+                     % (pts[0][0], pts[-1][0], loglog_exponent(pts)))
+        # Time at 1M faces, interpolated on the log-log line through the neighbouring sizes.
+        below = [p for p in pts if p[0] <= 1000000]
+        above = [p for p in pts if p[0] > 1000000]
+        if below and above:
+            (f0, t0), (f1, t1) = below[-1], above[0]
+            e = math.log(t1 / t0) / math.log(f1 / f0)
+            lines.append("- design at 1M faces (interpolated between %d and %d faces): **%s s** (target <= 10 s)"
+                         % (f0, f1, fmt(t0 * (1e6 / f0) ** e)))
+    for b in benches:
+        p = split_name(b["name"])
+        if p[0] == "BM_roots_sign_symmetric":
+            lines.append("- sign-symmetric N = 4 roots, one thread (the kernel), %s faces: **%s Mfaces/s** (target >= 20)"
+                         % (p[1], fmt(b["items_per_second"] / 1e6)))
+        elif p[0] == "BM_field_roots_sign_symmetric":
+            lines.append("- sign-symmetric N = 4 roots of a whole field, %s, %s faces: **%s Mfaces/s** (target >= 20)"
+                         % (p[1], p[2], fmt(b["items_per_second"] / 1e6)))
+    solver_of_default = DEFAULT_SOLVER.split("_")[0]
+    for b in frames["benchmarks"]:
+        p = split_name(b["name"])
+        if b.get("run_type", "iteration") != "iteration" or "error_occurred" in b or p[1] != solver_of_default:
+            continue
+        if p[0] == "BM_conjugate_inspired":
+            lines.append("- conjugate field on inspired_mesh (%d faces) to convergence: **%s s** in %d iterations "
+                         "(target <= 0.3 s)" % (int(b["faces"]), fmt(seconds(b)), int(b["iterations"])))
+        elif p[0] == "BM_conjugate_per_iteration":
+            lines.append("- conjugate field, one iteration at %d faces: **%s s**"
+                         % (int(b["faces"]), fmt(b["per_iteration_s"])))
+        elif p[0] == "BM_angle_bound_bumpy":
+            lines.append("- angle-bounded field on bumpy.off (%d faces) to convergence: **%s s** in %d iterations "
+                         "(reported)" % (int(b["faces"]), fmt(seconds(b)), int(b["iterations"])))
+    return out + lines + [""]
+
+
 def report(design, frames, memory, max_level, elapsed):
     out = []
     out.append("# Polyvector fields benchmark results\n")
@@ -109,10 +178,11 @@ def report(design, frames, memory, max_level, elapsed):
                    "processes shared the cores, and wall-clock times are inflated).\n"
                    % ", ".join("%.2f" % x for x in load))
     benches = [b for b in design["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+    out.extend(targets(design, frames, memory))
 
     # End to end and stages.
     rows, fits = [], {}
-    mem = {(m["solver"], int(m["faces"])): m for m in memory}
+    mem = {(m["solver"], m.get("mode", "parallel"), int(m["faces"])): m for m in memory}
     for b in benches:
         p = split_name(b["name"])
         if p[0] != "BM_design" or "error_occurred" in b:
@@ -120,7 +190,7 @@ def report(design, frames, memory, max_level, elapsed):
         solver, faces = p[1], int(b["faces"])
         total = seconds(b)
         fits.setdefault(solver, []).append((faces, total))
-        m = mem.get((MEMORY_SOLVERS.get(solver, ""), faces))
+        m = mem.get(MEMORY_SOLVERS.get(solver, ("", "")) + (faces,))
         rows.append([faces, solver, fmt(total), fmt(b["connection_s"]), fmt(b["assembly_s"]),
                      fmt(b["factorization_s"]), fmt(b["solve_s"]), fmt(b["roots_s"]), int(b.get("degrees", 0)),
                      fmt(faces / total / 1e3) if total > 0 else "-",
@@ -129,9 +199,14 @@ def report(design, frames, memory, max_level, elapsed):
     out.append("## Design, end to end (frames, assembly, factorization, solves, roots)\n")
     out.append(table(["faces", "solver", "total s", "connection s", "assembly s", "factorization s", "solve s",
                       "roots s", "degrees", "kfaces/s", "peak MB", "design peak MB"], rows))
-    out.append("\nSolvers: SimplicialLDLT is the package default (`Default_sparse_solver`); CHOLMOD is "
-               "`Cholmod_sparse_solver` (supernodal LL^*, CHOLMOD's default ordering); CHOLMOD_METIS is a "
-               "benchmark-only variant forcing METIS nested dissection. CHOLMOD uses the system BLAS.\n")
+    out.append("\nSolvers: CHOLMOD is `Cholmod_sparse_solver` (the package's own CHOLMOD driver: one symbolic "
+               "analysis for all degrees, CHOLMOD's choice of ordering and of supernodal LL^*); SimplicialLDLT is "
+               "`Simplicial_ldlt_solver` (Eigen, AMD ordering shared by the degrees); `_parallel` means "
+               "`CGAL::Parallel_tag` (the two degrees assembled, factored and solved in parallel with TBB), the "
+               "others `CGAL::Sequential_tag`. CHOLMOD_parallel is the package default (`Default_sparse_solver` "
+               "with `Parallel_if_available_tag`) when CHOLMOD and TBB are found. CHOLMOD_METIS is a benchmark-only "
+               "variant forcing METIS nested dissection through Eigen's CholmodSupernodalLLT (no shared analysis). "
+               "BLAS: %s.\n" % blas_name())
     out.append("Peak memory: `pvf_peak_memory` runs one design per process; it resets the kernel's "
                "peak-RSS mark after generating the mesh (`/proc/self/clear_refs`), so *peak MB* is VmHWM of "
                "the process during the design (mesh and libraries included) and *design peak MB* is that "
@@ -172,9 +247,13 @@ def report(design, frames, memory, max_level, elapsed):
         p = split_name(b["name"])
         if p[0].startswith("BM_roots"):
             rows.append([p[0], int(p[1]), fmt(seconds(b) * 1e3), fmt(b["items_per_second"] / 1e6)])
+        elif p[0].startswith("BM_field_roots"):
+            rows.append([p[0] + "/" + p[1], int(p[2]), fmt(seconds(b) * 1e3), fmt(b["items_per_second"] / 1e6)])
     out.append("## Root extraction kernel (`polyvector_roots`, pointer form, N = 4)\n")
     out.append("`sign_symmetric`: closed form; `general`: companion-matrix path on the same kind of input "
-               "(odd coefficients slightly nonzero).\n")
+               "(odd coefficients slightly nonzero); both on one thread. `BM_field_roots`: the loop over the faces "
+               "of `compute_field_roots()` (internal::field_roots), sequential or with the faces shared among "
+               "the cores (TBB).\n")
     out.append(table(["benchmark", "faces", "time ms", "Mfaces/s"], rows))
     out.append("")
 
@@ -235,17 +314,19 @@ def main():
     design = run_benchmark(os.path.join(bindir, "pvf_design_benchmark"), os.path.join(resdir, "design.json"), env, extra)
     frames = run_benchmark(os.path.join(bindir, "pvf_frame_field_benchmark"), os.path.join(resdir, "frames.json"), env)
 
-    solvers = ["ldlt"]
-    if any("CHOLMOD" in b["name"] for b in design["benchmarks"]):
-        solvers += ["cholmod", "cholmod-metis"]
+    # One process per (level, solver, mode) that the design benchmark ran.
+    variants = sorted({(split_name(b["name"])[1], int(split_name(b["name"])[2])) for b in design["benchmarks"]
+                       if split_name(b["name"])[0] == "BM_design" and "error_occurred" not in b})
     memory = []
-    for level in range(1, args.max_level + 1):
-        for solver in solvers:
-            line = run([os.path.join(bindir, "pvf_peak_memory"), str(level), solver], env=env, capture=True)
-            entry = dict(kv.split("=", 1) for kv in line.split())
-            for key in ("faces", "mesh_rss_kb", "peak_kb", "design_peak_kb", "hwm_reset"):
-                entry[key] = int(entry[key])
-            memory.append(entry)
+    for solver_name, level in sorted(variants, key=lambda v: (v[1], v[0])):
+        if solver_name not in MEMORY_SOLVERS:
+            continue
+        solver, mode = MEMORY_SOLVERS[solver_name]
+        line = run([os.path.join(bindir, "pvf_peak_memory"), str(level), solver, mode], env=env, capture=True)
+        entry = dict(kv.split("=", 1) for kv in line.split())
+        for key in ("faces", "mesh_rss_kb", "peak_kb", "design_peak_kb", "hwm_reset"):
+            entry[key] = int(entry[key])
+        memory.append(entry)
     with open(os.path.join(resdir, "memory.json"), "w") as f:
         json.dump(memory, f, indent=1)
 

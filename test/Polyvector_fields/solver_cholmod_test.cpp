@@ -6,12 +6,13 @@
 // It is not part of CGAL.
 
 // The fast solver paths against a simple one: the same designed fields with
-// CHOLMOD (Cholmod_sparse_solver), Eigen's SimplicialLDLT (Default_sparse_solver)
+// CHOLMOD (Cholmod_sparse_solver), Eigen's SimplicialLDLT (Simplicial_ldlt_solver)
 // and a dense reference (Eigen's dense LDLT of the same matrix, through a
 // SparseLinearAlgebraWithFactorTraits_d model written here) agree to 1e-10
 // relative to the size of the field, on small meshes.
 
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
 
@@ -28,6 +29,7 @@
 #include <complex>
 #include <map>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -190,7 +192,7 @@ TEST(SolverAgreement, SimplicialLDLTMatchesDenseLDLT)
     const Mesh tm = c.closed ? closed_mesh() : open_mesh();
     const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
     const auto dense = design<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
-    const auto ldlt = design<PVF::Default_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
     ASSERT_EQ(dense.size(), tm.number_of_faces() * c.N);
     EXPECT_LT(relative_difference(dense, ldlt), 1e-10);
     // The field is not trivial: a zero field would agree with anything.
@@ -212,7 +214,7 @@ TEST(SolverAgreement, CholmodMatchesSimplicialLDLTAndDense)
     const Mesh tm = c.closed ? closed_mesh() : open_mesh();
     const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
     const auto dense = design<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
-    const auto ldlt = design<PVF::Default_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
     const auto cholmod = design<PVF::Cholmod_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
     EXPECT_LT(relative_difference(dense, cholmod), 1e-10);
     EXPECT_LT(relative_difference(ldlt, cholmod), 1e-10);
@@ -231,7 +233,8 @@ TEST(SolverAgreement, CholmodAngleBoundMatchesSimplicialLDLT)
   const auto constraints = constraints_for(tm, 4, true, 12);
   std::map<face_descriptor, std::vector<Complex> > a, b;
   PVF::Angle_bound_result ra, rb;
-  ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, boost::make_assoc_property_map(a), ra),
+  ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, boost::make_assoc_property_map(a), ra,
+                                                  CGAL::parameters::sparse_linear_solver(PVF::Simplicial_ldlt_solver())),
             PVF::Error_code::SUCCESS);
   ASSERT_EQ(PVF::design_angle_bounded_frame_field(
               tm, 4, constraints, boost::make_assoc_property_map(b), rb,
@@ -250,5 +253,50 @@ TEST(SolverAgreement, CholmodAngleBoundMatchesSimplicialLDLT)
   EXPECT_LT(relative_difference(ca, cb), 1e-10);
 #endif
 }
+
+// The default is CHOLMOD exactly when the build found it (CGAL_PVF_HAS_CHOLMOD,
+// set by the CMake target), and Eigen's SimplicialLDLT otherwise.
+TEST(SolverAgreement, DefaultSolverIsCholmodWhenFound)
+{
+#ifdef CGAL_PVF_HAS_CHOLMOD
+  EXPECT_TRUE((std::is_same<PVF::Default_sparse_solver, PVF::Cholmod_sparse_solver>::value));
+#else
+  EXPECT_TRUE((std::is_same<PVF::Default_sparse_solver, PVF::Simplicial_ldlt_solver>::value));
+#endif
+}
+
+#ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+// The package's own CHOLMOD driver: a Hermitian positive definite matrix is
+// solved to rounding; an indefinite one is refused (not factored with a
+// negative pivot), and so is a solve before any factorization.
+TEST(SolverAgreement, CholmodFactorizationRefusesIndefiniteMatrices)
+{
+  typedef PVF::internal::Factorization<PVF::Cholmod_sparse_solver> Factorization;
+  const Complex i(0, 1);
+  // Hermitian 3x3, full storage.
+  Eigen::MatrixXcd dense(3, 3);
+  dense << 4.0, 1.0 + i, 0.0,
+           1.0 - i, 3.0, 0.5 * i,
+           0.0, -0.5 * i, 2.0;
+  PVF::internal::Sparse_matrix A = dense.sparseView();
+  A.makeCompressed();
+  Factorization positive;
+  PVF::internal::Dense_vector x, b(3);
+  b << 1.0, i, 2.0 - i;
+  EXPECT_FALSE(positive.solve(b, x));
+  ASSERT_TRUE(positive.analyze(A));
+  ASSERT_TRUE(positive.factorize(A));
+  ASSERT_TRUE(positive.solve(b, x));
+  EXPECT_LT((dense * x - b).norm(), 1e-14 * b.norm());
+
+  Eigen::MatrixXcd indefinite = dense;
+  indefinite(2, 2) = -2.0;
+  PVF::internal::Sparse_matrix B = indefinite.sparseView();
+  B.makeCompressed();
+  Factorization negative;
+  ASSERT_TRUE(negative.analyze(B));
+  EXPECT_FALSE(negative.factorize(B));
+}
+#endif
 
 } // namespace

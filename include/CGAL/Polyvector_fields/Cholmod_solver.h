@@ -17,8 +17,6 @@
 /// program must then link CHOLMOD itself. When it exists, the macro
 /// `CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE` is defined.
 
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
-
 #if defined(CGAL_PVF_HAS_CHOLMOD)
 #  define CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE 1
 #elif defined(__has_include)
@@ -28,6 +26,8 @@
 #endif
 
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+
+#include <CGAL/Polyvector_fields/internal/Cholmod_factorization.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -42,27 +42,34 @@ namespace Polyvector_fields {
 /// \ingroup PkgPolyvectorFieldsSolvers
 ///
 /// is a sparse solver for the package's complex Hermitian positive definite
-/// systems: the supernodal Cholesky factorization `L L^*` of SuiteSparse's
-/// CHOLMOD (fill-reducing ordering chosen by CHOLMOD: AMD, or METIS when CHOLMOD
-/// was built with it), through Eigen's `CholmodSupernodalLLT` and
-/// `CGAL::Eigen_solver_traits`.
+/// systems: SuiteSparse's CHOLMOD, which chooses the fill-reducing ordering
+/// (AMD, or METIS when AMD's fill is large and CHOLMOD was built with it) and
+/// between a simplicial \f$ LDL^* \f$ and a supernodal \f$ LL^* \f$
+/// factorization (supernodal, with BLAS, when the factor is dense enough).
+/// It is `Default_sparse_solver` when `CGAL_PVF_HAS_CHOLMOD` is defined.
 ///
 /// It is a model of `SparseLinearAlgebraWithFactorTraits_d` on
-/// `std::complex<double>`, to be given as the `SolverTraits` template parameter of
-/// `Polyvector_field_designer` or with the `sparse_linear_solver` named parameter.
-/// As with `Default_sparse_solver`, the symbolic analysis is done once per
-/// sparsity pattern and only the numeric factorization is redone when the
-/// values change.
+/// `std::complex<double>` (Eigen's `CholmodDecomposition` through
+/// `CGAL::Eigen_solver_traits`), to be given as the `SolverTraits` template
+/// parameter of `Polyvector_field_designer` or with the `sparse_linear_solver`
+/// named parameter. The package drives CHOLMOD directly when it receives this
+/// type: the symbolic analysis is done once for all the coefficient degrees of
+/// a field (they share one sparsity pattern) and kept for later numeric
+/// refactorizations; the degrees may then be factored in parallel.
 ///
-/// Only the lower triangle of each matrix is read. A matrix that is not
-/// positive definite makes the factorization fail, and the algorithm then
-/// returns `Error_code::SOLVER_FAILURE`.
+/// A matrix that is not positive definite makes the factorization fail, and the
+/// algorithm then returns `Error_code::SOLVER_FAILURE`.
 ///
-/// This type exists only when CHOLMOD is available (see the file description);
-/// link the CMake target `CGAL::Polyvector_fields_CHOLMOD_support`.
+/// For speed, CHOLMOD needs an optimised BLAS (Debian: `libopenblas0-pthread`,
+/// which `scripts/install_dependencies.sh` installs); the reference BLAS makes
+/// the supernodal factorization about twice as slow on large meshes. While the
+/// package factors and solves with CHOLMOD, OpenBLAS runs on one thread (its
+/// thread count is restored afterwards): its threads do not speed up these
+/// factors, would compete with the parallel degrees, and would change the
+/// rounding between parallel and sequential runs.
 ///
-/// \sa `Default_sparse_solver`
-typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<std::complex<double> > > >
+/// \sa `Default_sparse_solver`, `Simplicial_ldlt_solver`
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<std::complex<double> >, Eigen::Lower> >
   Cholmod_sparse_solver;
 
 } // namespace Polyvector_fields

@@ -14,6 +14,7 @@
 #include <CGAL/Polyvector_fields/Face_constraint.h>
 #include <CGAL/Polyvector_fields/Levi_civita_connection.h>
 #include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/internal/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
@@ -21,12 +22,14 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Default.h>
+#include <CGAL/tags.h>
 #include <CGAL/Kernel_traits.h>
 
 #include <chrono>
 #include <complex>
 #include <map>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -72,13 +75,26 @@ struct Design_statistics
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
 ///         `CGAL::Default` means the internal point map of the mesh
 /// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`;
-///         `CGAL::Default` means `Default_sparse_solver` (Eigen's `SimplicialLDLT`)
+///         `CGAL::Default` means `Default_sparse_solver` (CHOLMOD when it was found at configure time,
+///         Eigen's `SimplicialLDLT` otherwise)
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         with parallelism (TBB), the independent coefficient degrees are assembled, factored and solved
+///         at the same time (with the package's own solvers `Cholmod_sparse_solver` and
+///         `Simplicial_ldlt_solver`, and any other `CGAL::Eigen_solver_traits` model); the field is
+///         bit-identical to the sequential one.
 template <typename TriangleMesh,
           typename Traits = CGAL::Default,
           typename VertexPointMap = CGAL::Default,
-          typename SolverTraits = CGAL::Default>
+          typename SolverTraits = CGAL::Default,
+          typename ConcurrencyTag = CGAL::Parallel_if_available_tag>
 class Polyvector_field_designer
 {
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  static constexpr bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+
 public:
   /// \name Types
   /// @{
@@ -292,7 +308,7 @@ private:
     }
     else
     {
-      m_system.reset(new System(*m_connection, m_N, degrees, m_solver_prototype));
+      m_system.reset(new System(*m_connection, m_N, degrees, m_solver_prototype, parallel));
       m_system_degrees = degrees;
       m_system->specifications() = m_specifications;
       if(!m_system->factor())

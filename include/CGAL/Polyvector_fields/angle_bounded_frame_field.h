@@ -51,6 +51,8 @@ struct Angle_bound_result
 /// Faces fixed by a hard full constraint are not changed, even if the
 /// constraint itself is below the bound (see `Angle_bound_result::minimum_angle`).
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         the two degrees of each global step are factored and solved in parallel with TBB; the result does not depend on it
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam ConstraintRange a range of `Face_constraint<face_descriptor, Vector_3>` (at most 2 vectors each)
 /// \tparam CoefficientMap a model of `WritablePropertyMap` from faces to `std::vector<std::complex<double>>`
@@ -112,7 +114,8 @@ struct Angle_bound_result
 ///          `NOT_A_FRAME_FIELD` if `N != 4` or `sign_symmetric(false)` is given, `INVALID_PARAMETER`
 ///          or `NON_FINITE_VALUE` for a bad parameter, or an error of `design_polyvector_field()`.
 ///          On failure `coefficient_map` is not written.
-template <typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t N, const ConstraintRange& constraints,
                                             CoefficientMap coefficient_map, Angle_bound_result& result,
@@ -133,8 +136,8 @@ Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t 
   if(!(theta_min > 0) || theta_min > CGAL_PI / 2 || !(tolerance >= 0))
     return Error_code::INVALID_PARAMETER;
 
-  std::unique_ptr<typename internal::Frame_field_types<TriangleMesh, NamedParameters>::Designer> designer;
-  code = internal::smooth_frame_field(tm, N, constraints, np, designer);
+  std::unique_ptr<typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Designer> designer;
+  code = internal::smooth_frame_field<ConcurrencyTag>(tm, N, constraints, np, designer);
   if(code != Error_code::SUCCESS)
     return code;
   const auto& connection = designer->connection();
@@ -142,8 +145,9 @@ Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t 
   std::vector<Complex> c = designer->coefficient_array(), targets(4 * F);
 
   internal::Frame_field_iterations<std::remove_reference_t<decltype(connection)>,
-                                   typename internal::Frame_field_types<TriangleMesh, NamedParameters>::Solver>
-    iterations(connection, designer->specifications(), designer->solver_prototype(), std::vector<double>(F, 1.0), 0.0);
+                                   typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Solver>
+    iterations(connection, designer->specifications(), designer->solver_prototype(), std::vector<double>(F, 1.0), 0.0,
+               internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::parallel);
 
   // Smallest frame angle over the faces that are not fixed, and over all faces.
   auto smallest_angles = [&](double& free_faces, double& all_faces) {

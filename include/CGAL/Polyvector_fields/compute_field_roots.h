@@ -18,21 +18,46 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/blocked_range.h>
+#  include <tbb/parallel_for.h>
+#endif
+
 #include <complex>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-// Roots of every face (N per face, counterclockwise, in the face frame).
-inline void field_roots(const std::vector<std::complex<double> >& coefficients, std::size_t N, bool sign_symmetric,
-                        std::vector<std::complex<double> >& roots)
+// Roots of every face (N per face, counterclockwise, in the face frame). With
+// CGAL::Parallel_tag (and TBB) the faces are shared among threads; each face's
+// roots are computed by the same operations, so the result is bit-identical.
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+void field_roots(const std::vector<std::complex<double> >& coefficients, std::size_t N, bool sign_symmetric,
+                 std::vector<std::complex<double> >& roots)
 {
   const std::size_t F = coefficients.size() / N;
   roots.resize(F * N);
-  for(std::size_t f = 0; f < F; ++f)
-    polyvector_roots(coefficients.data() + f * N, N, roots.data() + f * N, sign_symmetric);
+  const auto faces = [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
+      polyvector_roots(coefficients.data() + f * N, N, roots.data() + f * N, sign_symmetric);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, F, 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) { faces(r.begin(), r.end()); });
+    return;
+  }
+#else
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  faces(0, F);
 }
 
 // World-space roots of a connection's faces, written into `root_map`.
@@ -60,6 +85,9 @@ void write_world_roots(const Connection& connection, std::size_t N, const std::v
 /// coefficients of the field (the roots of each face's polynomial, mapped
 /// from the face frame to 3D; see `polyvector_roots()` for their order).
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         with parallelism (TBB) the roots of the faces are computed in parallel (the maps are read and
+///         written by the calling thread only); the result does not depend on it
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
 /// \tparam RootMap a model of `WritablePropertyMap` from faces to `std::vector<Vector_3>`, `Vector_3` the vector type of the kernel
@@ -83,7 +111,8 @@ void write_world_roots(const Connection& connection, std::size_t N, const std::v
 /// \returns `SUCCESS`, a mesh error (`EMPTY_MESH`, `NON_TRIANGLE_FACE`, `DEGENERATE_FACE`), `INVALID_DEGREE`,
 ///          `INCONSISTENT_DEGREE` (a coefficient vector not of size `N`) or `NON_FINITE_VALUE`.
 ///          On failure `root_map` is not written.
-template <typename TriangleMesh, typename CoefficientMap, typename RootMap,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename TriangleMesh, typename CoefficientMap, typename RootMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code compute_field_roots(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map, RootMap root_map,
                                const NamedParameters& np = CGAL::parameters::default_values())
@@ -101,7 +130,7 @@ Error_code compute_field_roots(const TriangleMesh& tm, std::size_t N, Coefficien
   const Error_code code = internal::read_coefficients(connection, N, coefficient_map, coefficients);
   if(code != Error_code::SUCCESS)
     return code;
-  internal::field_roots(coefficients, N, sign_symmetric, roots);
+  internal::field_roots<ConcurrencyTag>(coefficients, N, sign_symmetric, roots);
   internal::write_world_roots<typename Geom_traits::Vector_3>(connection, N, roots, root_map);
   return Error_code::SUCCESS;
 }

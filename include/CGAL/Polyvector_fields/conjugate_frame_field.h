@@ -85,6 +85,8 @@ void face_shape_operators(const Connection& connection, CurvatureMap curvatures,
 /// constraint falls below `tolerance`, the field being rescaled so that the root
 /// mean square length of its vectors is 1, or after `number_of_iterations` steps.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         the two degrees of each global step are factored and solved in parallel with TBB; the result does not depend on it
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam ConstraintRange a range of `Face_constraint<face_descriptor, Vector_3>` (at most 2 vectors each)
 /// \tparam CoefficientMap a model of `WritablePropertyMap` from faces to `std::vector<std::complex<double>>`
@@ -144,7 +146,8 @@ void face_shape_operators(const Connection& connection, CurvatureMap curvatures,
 ///          `NOT_A_FRAME_FIELD` if `N != 4` or `sign_symmetric(false)` is given, `INVALID_PARAMETER`
 ///          or `NON_FINITE_VALUE` for a bad parameter, `CURVATURE_ESTIMATION_FAILED`, or an error of
 ///          `design_polyvector_field()`. On failure `coefficient_map` is not written.
-template <typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, const ConstraintRange& constraints,
                                         CoefficientMap coefficient_map, Conjugate_field_result& result,
@@ -154,7 +157,7 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef std::complex<double> Complex;
-  typedef typename internal::Frame_field_types<TriangleMesh, NamedParameters>::Geom_traits Geom_traits;
+  typedef typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Geom_traits Geom_traits;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
   const double orthogonality = choose_parameter(get_parameter(np, internal_np::orthogonality_weight), 0.0);
@@ -168,8 +171,8 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
   if(!(orthogonality >= 0) || !(tolerance > 0))
     return Error_code::INVALID_PARAMETER;
 
-  std::unique_ptr<typename internal::Frame_field_types<TriangleMesh, NamedParameters>::Designer> designer;
-  code = internal::smooth_frame_field(tm, N, constraints, np, designer);
+  std::unique_ptr<typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Designer> designer;
+  code = internal::smooth_frame_field<ConcurrencyTag>(tm, N, constraints, np, designer);
   if(code != Error_code::SUCCESS)
     return code;
   const auto& connection = designer->connection();
@@ -198,8 +201,9 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
 
   std::vector<Complex> c = designer->coefficient_array(), targets(4 * F);
   internal::Frame_field_iterations<std::remove_reference_t<decltype(connection)>,
-                                   typename internal::Frame_field_types<TriangleMesh, NamedParameters>::Solver>
-    iterations(connection, designer->specifications(), designer->solver_prototype(), Khat, orthogonality);
+                                   typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Solver>
+    iterations(connection, designer->specifications(), designer->solver_prototype(), Khat, orthogonality,
+               internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::parallel);
 
   // Residuals are measured on the field scaled to unit root mean square length.
   Conjugate_field_result r;

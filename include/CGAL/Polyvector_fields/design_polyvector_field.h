@@ -24,6 +24,8 @@ namespace Polyvector_fields {
 /// the treatment of components; use that class to solve again for new
 /// constraint values without factoring again.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
+///         (see `Polyvector_field_designer`; the result does not depend on it)
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam ConstraintRange a range of `Face_constraint<face_descriptor, Vector_3>`
 /// \tparam CoefficientMap a model of `WritablePropertyMap` from faces to `std::vector<std::complex<double>>`
@@ -57,7 +59,8 @@ namespace Polyvector_fields {
 /// \returns `Error_code::SUCCESS` or the reason of the failure (see `Polyvector_field_designer::status()`,
 ///          `Polyvector_field_designer::add_constraint()` and `Polyvector_field_designer::solve()`);
 ///          on failure `coefficient_map` is not written.
-template <typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code design_polyvector_field(const TriangleMesh& tm, std::size_t N, const ConstraintRange& constraints,
                                    CoefficientMap coefficient_map,
@@ -67,7 +70,7 @@ Error_code design_polyvector_field(const TriangleMesh& tm, std::size_t N, const 
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t, NamedParameters,
                                                              Default_sparse_solver>::type Solver;
-  Polyvector_field_designer<TriangleMesh, Geom_traits, Vertex_point_map, Solver> designer(tm, N, np);
+  Polyvector_field_designer<TriangleMesh, Geom_traits, Vertex_point_map, Solver, ConcurrencyTag> designer(tm, N, np);
   if(designer.status() != Error_code::SUCCESS)
     return designer.status();
   const Error_code code = designer.add_constraints(constraints);

@@ -37,12 +37,22 @@
 // A component constrained only by partial constraints may leave a null space
 // (a flat region where a rotation keeps P(u) = 0): a regularisation of
 // relative size 1e-10 picks the minimum-norm minimiser there.
+//
+// With `parallel` (and TBB linked, and a solver whose Factorization is
+// thread safe), the independent blocks are assembled, factored and solved in
+// parallel. Each block is computed by the same operations whatever the thread,
+// so the result is bit-identical to the sequential run.
 
 #include <CGAL/Polyvector_fields/internal/Factorization.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -85,8 +95,9 @@ public:
   static constexpr double regularisation = 1e-10;
 
   Coefficient_system(const Connection& connection, std::size_t N, const std::vector<int>& degrees,
-                     const SolverTraits& solver_prototype = SolverTraits())
-    : m_connection(connection), m_N(N), m_degrees(degrees), m_solver_prototype(solver_prototype)
+                     const SolverTraits& solver_prototype = SolverTraits(), bool parallel = false)
+    : m_connection(connection), m_N(N), m_degrees(degrees), m_solver_prototype(solver_prototype),
+      m_parallel(parallel && Factorization<SolverTraits>::is_thread_safe)
   {
     const std::size_t F = connection.number_of_faces();
     m_transport.resize(m_degrees.size());
@@ -118,26 +129,32 @@ public:
   // Classifies faces, lays out the unknowns, assembles, analyses and factors.
   bool factor()
   {
+    typename Factorization<SolverTraits>::Solver_scope scope;
     classify();
     m_factorizations.clear();
-    // All blocks have one pattern: they share one fill-reducing ordering.
+    // All blocks have one pattern: they share one symbolic analysis.
     const std::size_t blocks = m_coupled ? 1 : m_degrees.size();
-    const std::shared_ptr<Shared_ordering> ordering = std::make_shared<Shared_ordering>();
+    const auto analysis = std::make_shared<typename Factorization<SolverTraits>::Shared_analysis>();
     for(std::size_t b = 0; b < blocks; ++b)
     {
       m_factorizations.emplace_back(new Factorization<SolverTraits>(m_solver_prototype));
-      m_factorizations.back()->share_ordering(ordering);
+      m_factorizations.back()->share_analysis(analysis);
     }
     return factor_blocks(true);
   }
 
   // Refactors after a change of weights only (same pattern, same symbolic analysis).
-  bool refactor_numeric() { return factor_blocks(false); }
+  bool refactor_numeric()
+  {
+    typename Factorization<SolverTraits>::Solver_scope scope;
+    return factor_blocks(false);
+  }
 
   // Solves with the current constraint values and data targets.
   // coefficients: N * F, face-major (coefficients[f * N + m]).
   bool solve(std::vector<Complex>& coefficients)
   {
+    typename Factorization<SolverTraits>::Solver_scope scope;
     const std::size_t F = m_connection.number_of_faces();
     coefficients.assign(F * m_N, Complex(0));
     Timer timer;
@@ -154,8 +171,8 @@ public:
         coefficients[f * m_N] = m_unconstrained_solution[f];
     }
     const std::size_t blocks = m_coupled ? 1 : m_degrees.size();
-    for(std::size_t b = 0; b < blocks; ++b)
-    {
+    // Blocks write disjoint coefficients (their own degree).
+    const bool solved = for_each_block(blocks, [&](std::size_t b) {
       Dense_vector rhs = Dense_vector::Zero(Eigen::Index(m_block_size));
       Assembler assembler{ nullptr, &rhs };
       enumerate_terms(b, assembler);
@@ -177,8 +194,11 @@ public:
           coefficients[f * m_N + m_degrees[q]] = value;
         }
       }
-    }
+      return true;
+    });
     m_times.solve = timer.elapsed();
+    if(!solved)
+      return false;
     for(const Complex& c : coefficients)
       if(!std::isfinite(c.real()) || !std::isfinite(c.imag()))
         return false;
@@ -186,6 +206,25 @@ public:
   }
 
 private:
+  // Runs task(b) for every block b, in parallel when allowed; true when every
+  // task returned true.
+  template <typename Task>
+  bool for_each_block(std::size_t blocks, const Task& task) const
+  {
+    std::vector<char> ok(blocks, 0);
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m_parallel && blocks > 1)
+    {
+      tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) { ok[b] = task(b) ? 1 : 0; });
+      return std::find(ok.begin(), ok.end(), 0) == ok.end();
+    }
+#endif
+    for(std::size_t b = 0; b < blocks; ++b)
+      if(!task(b))
+        return false;
+    return true;
+  }
+
   struct Timer
   {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
@@ -283,7 +322,10 @@ private:
       else if(m_kind[f] == PARTIAL)
         m_block_size += std::size_t(m_partial_basis[f].Z.cols());
     }
+    // Scratch of coefficient(), one per slot: blocks may be enumerated in parallel.
     m_identity_variables.resize(slots);
+    m_partial_row_coefficients.resize(slots);
+    m_partial_row_variables.resize(slots);
     m_unit = Complex(1);
   }
 
@@ -322,7 +364,7 @@ private:
         break;
       case PARTIAL:
       {
-        const Partial_basis& basis = m_partial_basis[f];
+        const Partial_basis& basis = m_partial_basis.at(f);
         const Eigen::Index r = basis.Z.cols();
         std::vector<Complex>& coefficients = m_partial_row_coefficients[q];
         std::vector<std::size_t>& variables = m_partial_row_variables[q];
@@ -365,11 +407,6 @@ private:
     const std::size_t slots = m_degrees.size();
     std::vector<std::size_t> variables;
     std::vector<Complex> alpha;
-    if(m_partial_row_coefficients.size() != slots)
-    {
-      m_partial_row_coefficients.resize(slots);
-      m_partial_row_variables.resize(slots);
-    }
     auto in_block = [&](std::size_t q) { return m_coupled || q == block; };
     auto flush = [&](const Complex& gamma) {
       if(!variables.empty())
@@ -467,27 +504,33 @@ private:
   bool factor_blocks(bool analyse)
   {
     Timer timer;
+    const std::size_t blocks = m_factorizations.size();
     // Kept alive as members: some solvers (Eigen's iterative ones) keep a reference.
     std::vector<Sparse_matrix>& matrices = m_matrices;
-    matrices.resize(m_factorizations.size());
-    for(std::size_t b = 0; b < m_factorizations.size(); ++b)
-    {
+    matrices.resize(blocks);
+    for_each_block(blocks, [&](std::size_t b) {
       std::vector<Eigen::Triplet<Complex> > triplets;
       triplets.reserve(m_connection.interior_edges().size() * 4 + m_block_size);
       Assembler assembler{ &triplets, nullptr };
       enumerate_terms(b, assembler);
       matrices[b].resize(Eigen::Index(m_block_size), Eigen::Index(m_block_size));
       matrices[b].setFromTriplets(triplets.begin(), triplets.end());
-    }
+      matrices[b].makeCompressed();
+      return true;
+    });
     m_times.assembly = timer.elapsed();
     Timer factor_timer;
-    for(std::size_t b = 0; b < m_factorizations.size(); ++b)
+    if(m_block_size > 0)
     {
-      if(m_block_size == 0)
-        continue;
-      if(analyse && !m_factorizations[b]->analyze(matrices[b]))
+      // The first analysis computes the shared one, alone; then every block.
+      if(analyse && !m_factorizations[0]->analyze(matrices[0]))
         return false;
-      if(!m_factorizations[b]->factorize(matrices[b]))
+      const bool factored = for_each_block(blocks, [&](std::size_t b) {
+        if(analyse && b > 0 && !m_factorizations[b]->analyze(matrices[b]))
+          return false;
+        return m_factorizations[b]->factorize(matrices[b]);
+      });
+      if(!factored)
         return false;
     }
     m_times.factorization = factor_timer.elapsed();
@@ -575,6 +618,7 @@ private:
   std::size_t m_N;
   std::vector<int> m_degrees;
   SolverTraits m_solver_prototype;
+  bool m_parallel;
   std::vector<std::vector<std::pair<Complex, Complex> > > m_transport;  // per slot, per edge: conj(e_f)^(N-m), conj(e_g)^(N-m)
   std::map<std::size_t, Face_specification> m_specs;
   std::vector<std::vector<double> > m_data_weight;

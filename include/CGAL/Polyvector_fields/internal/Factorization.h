@@ -25,7 +25,21 @@
 // fill-reducing permutation, the expensive part of the symbolic analysis, is
 // computed once and shared (Shared_ordering): each degree's matrix is permuted
 // with it and factored by the same solver with the natural ordering, whose own
-// analysis is only the elimination tree.
+// analysis is only the elimination tree. (internal/Cholmod_factorization.h
+// does the same for CHOLMOD with its whole symbolic factor.)
+//
+// Protocol, for every Factorization<S>:
+//   share_analysis(p)   p: a std::shared_ptr<Factorization<S>::Shared_analysis>
+//                       common to the factorizations of one pattern;
+//   analyze(A)          the first call on a shared analysis computes it and
+//                       must not run concurrently with the other calls;
+//   factorize(A)        numeric factorization (again after a change of values);
+//   solve(b, x).
+// `is_thread_safe` tells whether distinct factorizations that share an
+// analysis may run analyze (after the first), factorize and solve in
+// different threads at the same time. An object of type `Solver_scope` is
+// alive while the factorizations of a system are computed or used, whether
+// in parallel or not (for CHOLMOD it keeps OpenBLAS on one thread).
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -77,10 +91,17 @@ template <typename SolverTraits>
 class Factorization
 {
 public:
+  // Copies of a traits model may share state: never run two at once.
+  static constexpr bool is_thread_safe = false;
+
   explicit Factorization(const SolverTraits& prototype = SolverTraits()) : m_traits(prototype) {}
 
   // The generic concept has no separate symbolic step to share.
-  void share_ordering(const std::shared_ptr<Shared_ordering>&) {}
+  struct Shared_analysis
+  {};
+  struct Solver_scope
+  {};
+  void share_analysis(const std::shared_ptr<Shared_analysis>&) {}
 
   // Both steps at once: the generic concept has no separate symbolic step.
   bool analyze(const Sparse_matrix&) { return true; }
@@ -123,12 +144,19 @@ class Factorization<CGAL::Eigen_solver_traits<EigenSolver> >
   typedef typename std::conditional<shares_ordering, Twin, EigenSolver>::type Solver;
 
 public:
+  // Each factorization owns its solver; a shared ordering is only read once computed.
+  static constexpr bool is_thread_safe = true;
+
   explicit Factorization(const CGAL::Eigen_solver_traits<EigenSolver>& = CGAL::Eigen_solver_traits<EigenSolver>())
     : m_solver(new Solver)
   {}
 
+  typedef Shared_ordering Shared_analysis;
+  struct Solver_scope
+  {};
+
   // Factorizations of matrices with the same pattern may share one ordering.
-  void share_ordering(const std::shared_ptr<Shared_ordering>& ordering) { m_ordering = ordering; }
+  void share_analysis(const std::shared_ptr<Shared_ordering>& ordering) { m_ordering = ordering; }
 
   bool analyze(const Sparse_matrix& A)
   {
@@ -186,14 +214,6 @@ private:
 };
 
 } // namespace internal
-
-/// \ingroup PkgPolyvectorFieldsSolvers
-///
-/// is the default sparse solver of the package: Eigen's `SimplicialLDLT` on
-/// complex Hermitian matrices, through `CGAL::Eigen_solver_traits`.
-typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std::complex<double> > > >
-  Default_sparse_solver;
-
 } // namespace Polyvector_fields
 } // namespace CGAL
 

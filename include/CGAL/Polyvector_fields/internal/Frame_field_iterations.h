@@ -58,8 +58,9 @@ public:
                          const std::map<std::size_t, Face_specification>& specifications,
                          const SolverTraits& solver_prototype,
                          std::vector<double> data_scale,
-                         double orthogonality_weight)
-    : m_system(connection, 4, { 0, 2 }, solver_prototype),
+                         double orthogonality_weight,
+                         bool parallel = false)
+    : m_system(connection, 4, { 0, 2 }, solver_prototype, parallel),
       m_scale(std::move(data_scale)),
       m_orthogonality(orthogonality_weight)
   {

@@ -21,19 +21,21 @@
 
 #include <cmath>
 #include <memory>
+#include <type_traits>
 
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-template <typename TriangleMesh, typename NamedParameters>
+template <typename TriangleMesh, typename NamedParameters, typename ConcurrencyTag>
 struct Frame_field_types
 {
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t, NamedParameters,
                                                              Default_sparse_solver>::type Solver;
-  typedef Polyvector_field_designer<TriangleMesh, Geom_traits, Vertex_point_map, Solver> Designer;
+  typedef Polyvector_field_designer<TriangleMesh, Geom_traits, Vertex_point_map, Solver, ConcurrencyTag> Designer;
+  static constexpr bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
 };
 
 // The iteration parameters common to both algorithms.
@@ -64,16 +66,16 @@ Error_code read_local_global_parameters(const NamedParameters& np, std::size_t d
 
 // Checks that the call is for a frame field and designs the smooth field from
 // the constraints; on success `designer` holds it.
-template <typename TriangleMesh, typename ConstraintRange, typename NamedParameters>
+template <typename ConcurrencyTag, typename TriangleMesh, typename ConstraintRange, typename NamedParameters>
 Error_code smooth_frame_field(const TriangleMesh& tm, std::size_t N, const ConstraintRange& constraints,
                               const NamedParameters& np,
-                              std::unique_ptr<typename Frame_field_types<TriangleMesh, NamedParameters>::Designer>& designer)
+                              std::unique_ptr<typename Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Designer>& designer)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   if(N != 4 || !choose_parameter(get_parameter(np, internal_np::sign_symmetric), true))
     return Error_code::NOT_A_FRAME_FIELD;
-  designer.reset(new typename Frame_field_types<TriangleMesh, NamedParameters>::Designer(
+  designer.reset(new typename Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Designer(
     tm, 4, parameters::combine(np, parameters::sign_symmetric(true))));
   if(designer->status() != Error_code::SUCCESS)
     return designer->status();

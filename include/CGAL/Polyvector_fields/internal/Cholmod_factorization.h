@@ -1,0 +1,247 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_CHOLMOD_FACTORIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_CHOLMOD_FACTORIZATION_H
+
+// The package's Factorization for `Cholmod_sparse_solver`, driving CHOLMOD's C
+// interface directly rather than through Eigen's wrapper, for two reasons:
+// - all blocks of a system share one pattern, so CHOLMOD's symbolic analysis
+//   (fill-reducing ordering, elimination tree, supernodes) is done once, on
+//   the first block, and each block factors a copy of that symbolic factor;
+// - each Factorization owns its `cholmod_common`, so that the blocks can be
+//   factored at the same time in different threads (CHOLMOD is reentrant as
+//   long as no two threads share a `cholmod_common`).
+// The matrices are given to CHOLMOD without a copy: full Hermitian storage
+// read as "lower triangle only" (stype = -1).
+//
+// CHOLMOD chooses the ordering (AMD, or METIS when AMD's fill is large) and
+// between simplicial LDL^* and supernodal LL^* (by the ratio of flops to
+// factor entries), as in Eigen's `CholmodDecomposition` default mode.
+
+#include <CGAL/Polyvector_fields/internal/Factorization.h>
+
+#include <CGAL/Eigen_solver_traits.h>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
+
+#include <cholmod.h>
+
+#if defined(__unix__) || defined(__APPLE__)
+#  include <dlfcn.h>
+#  define CGAL_PVF_HAS_DLSYM 1
+#endif
+
+#include <cstring>
+#include <memory>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+typedef Eigen::CholmodDecomposition<Sparse_matrix, Eigen::Lower> Cholmod_decomposition;
+
+// A `cholmod_common` that starts and finishes with its owner.
+class Cholmod_workspace
+{
+public:
+  Cholmod_workspace() { cholmod_start(&m_common); }
+  ~Cholmod_workspace() { cholmod_finish(&m_common); }
+  Cholmod_workspace(const Cholmod_workspace&) = delete;
+  Cholmod_workspace& operator=(const Cholmod_workspace&) = delete;
+  cholmod_common* get() { return &m_common; }
+
+private:
+  cholmod_common m_common;
+};
+
+// While CHOLMOD factors and solves, OpenBLAS (when it is the BLAS that CHOLMOD
+// calls) runs on one thread, for three reasons measured at 640k faces on 2
+// cores: its threads bring nothing on these factors of surface meshes, whose
+// supernodes are small (4.32 s to factor one degree with 2 threads, 4.28 s
+// with 1); when the degrees are factored in parallel, its threads
+// oversubscribe the cores and it serialises concurrent callers on its thread
+// pool (12.3 s for two degrees in parallel with its threads, 5.2 s with one
+// thread each, 8.9 s one degree after the other); and its results depend on
+// its number of threads in the last bits, so that a parallel run would not
+// be bit-identical to a sequential one. OpenBLAS is looked up at run time,
+// so any BLAS may be linked; the previous thread count is restored on exit.
+class Single_threaded_blas_scope
+{
+  typedef void (*Set_threads)(int);
+  typedef int (*Get_threads)();
+
+public:
+  Single_threaded_blas_scope()
+  {
+#ifdef CGAL_PVF_HAS_DLSYM
+    void* set = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+    void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+    if(set != nullptr && get != nullptr)
+    {
+      m_saved = reinterpret_cast<Get_threads>(get)();
+      if(m_saved > 1)
+      {
+        m_set = reinterpret_cast<Set_threads>(set);
+        m_set(1);
+      }
+    }
+#endif
+  }
+  ~Single_threaded_blas_scope()
+  {
+    if(m_set != nullptr)
+      m_set(m_saved);
+  }
+  Single_threaded_blas_scope(const Single_threaded_blas_scope&) = delete;
+  Single_threaded_blas_scope& operator=(const Single_threaded_blas_scope&) = delete;
+
+private:
+  Set_threads m_set = nullptr;
+  int m_saved = 1;
+};
+
+// CHOLMOD's symbolic factor of one pattern, shared by the blocks of a system.
+struct Cholmod_symbolic_analysis
+{
+  Cholmod_workspace workspace;
+  cholmod_factor* symbolic = nullptr;  // owned; only read once computed
+
+  ~Cholmod_symbolic_analysis()
+  {
+    if(symbolic != nullptr)
+      cholmod_free_factor(&symbolic, workspace.get());
+  }
+};
+
+// A view of `A` (compressed, column-major, complex) as a CHOLMOD Hermitian
+// matrix of which only the lower triangle is read.
+inline cholmod_sparse cholmod_view(const Sparse_matrix& A)
+{
+  cholmod_sparse S;
+  std::memset(&S, 0, sizeof(S));
+  S.nrow = std::size_t(A.rows());
+  S.ncol = std::size_t(A.cols());
+  S.nzmax = std::size_t(A.nonZeros());
+  S.p = const_cast<int*>(A.outerIndexPtr());
+  S.i = const_cast<int*>(A.innerIndexPtr());
+  S.x = const_cast<Complex*>(A.valuePtr());
+  S.z = nullptr;
+  S.nz = nullptr;
+  S.stype = -1;
+  S.itype = CHOLMOD_INT;
+  S.xtype = CHOLMOD_COMPLEX;
+  S.dtype = CHOLMOD_DOUBLE;
+  S.sorted = 1;
+  S.packed = 1;
+  return S;
+}
+
+template <>
+class Factorization<CGAL::Eigen_solver_traits<Cholmod_decomposition> >
+{
+public:
+  typedef Cholmod_symbolic_analysis Shared_analysis;
+  typedef Single_threaded_blas_scope Solver_scope;
+  static constexpr bool is_thread_safe = true;
+
+  explicit Factorization(const CGAL::Eigen_solver_traits<Cholmod_decomposition>& =
+                           CGAL::Eigen_solver_traits<Cholmod_decomposition>())
+  {}
+
+  ~Factorization()
+  {
+    if(m_factor != nullptr)
+      cholmod_free_factor(&m_factor, m_workspace.get());
+  }
+
+  Factorization(const Factorization&) = delete;
+  Factorization& operator=(const Factorization&) = delete;
+
+  void share_analysis(const std::shared_ptr<Shared_analysis>& analysis) { m_analysis = analysis; }
+
+  // The first call on a shared analysis computes it; the others copy it.
+  // The first call must not run concurrently with the others.
+  bool analyze(const Sparse_matrix& A)
+  {
+    if(!A.isCompressed())
+      return false;
+    if(!m_analysis)
+      m_analysis = std::make_shared<Shared_analysis>();
+    if(m_factor != nullptr)
+      cholmod_free_factor(&m_factor, m_workspace.get());
+    cholmod_sparse S = cholmod_view(A);
+    if(m_analysis->symbolic == nullptr)
+    {
+      m_analysis->symbolic = cholmod_analyze(&S, m_analysis->workspace.get());
+      if(m_analysis->symbolic == nullptr || m_analysis->workspace.get()->status != CHOLMOD_OK)
+        return false;
+    }
+    m_factor = cholmod_copy_factor(m_analysis->symbolic, m_workspace.get());
+    return m_factor != nullptr;
+  }
+
+  bool factorize(const Sparse_matrix& A)
+  {
+    if(m_factor == nullptr || !A.isCompressed())
+      return false;
+    cholmod_sparse S = cholmod_view(A);
+    cholmod_common* common = m_workspace.get();
+    if(!cholmod_factorize(&S, m_factor, common))
+      return false;
+    // CHOLMOD_NOT_POSDEF is a warning for CHOLMOD, a failure for us.
+    if(common->status != CHOLMOD_OK || m_factor->minor != m_factor->n)
+      return false;
+    // A simplicial LDL^* factorization only stops at a zero pivot: a negative
+    // one (an indefinite matrix) must be refused here. D(j) is the first entry
+    // of column j (complex entries: real parts at even offsets).
+    if(!m_factor->is_super && !m_factor->is_ll)
+    {
+      const int* Lp = static_cast<const int*>(m_factor->p);
+      const double* Lx = static_cast<const double*>(m_factor->x);
+      for(std::size_t j = 0; j < m_factor->n; ++j)
+        if(!(Lx[2 * std::size_t(Lp[j])] > 0))
+          return false;
+    }
+    return true;
+  }
+
+  bool solve(const Dense_vector& b, Dense_vector& x)
+  {
+    if(m_factor == nullptr || std::size_t(b.size()) != m_factor->n)
+      return false;
+    cholmod_dense B;
+    std::memset(&B, 0, sizeof(B));
+    B.nrow = m_factor->n;
+    B.ncol = 1;
+    B.nzmax = m_factor->n;
+    B.d = m_factor->n;
+    B.x = const_cast<Complex*>(b.data());
+    B.z = nullptr;
+    B.xtype = CHOLMOD_COMPLEX;
+    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_common* common = m_workspace.get();
+    cholmod_dense* X = cholmod_solve(CHOLMOD_A, m_factor, &B, common);
+    if(X == nullptr)
+      return false;
+    x = Eigen::Map<const Dense_vector>(static_cast<const Complex*>(X->x), Eigen::Index(m_factor->n));
+    cholmod_free_dense(&X, common);
+    return common->status == CHOLMOD_OK;
+  }
+
+private:
+  Cholmod_workspace m_workspace;
+  std::shared_ptr<Shared_analysis> m_analysis;
+  cholmod_factor* m_factor = nullptr;
+};
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_CHOLMOD_FACTORIZATION_H

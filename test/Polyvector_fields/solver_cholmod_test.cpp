@@ -15,6 +15,7 @@
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -252,6 +253,50 @@ TEST(SolverAgreement, CholmodAngleBoundMatchesSimplicialLDLT)
   }
   EXPECT_LT(relative_difference(ca, cb), 1e-10);
 #endif
+}
+
+// The frame-field iterations refactor with new weights by accumulating the new
+// values into the assembled matrices (same pattern, analysis kept); the result
+// must be the one of a system assembled and analysed from scratch.
+template <typename Solver>
+void check_refactor_matches_fresh_factorization(const char* name)
+{
+  SCOPED_TRACE(name);
+  const Mesh tm = closed_mesh();
+  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver> designer(
+    tm, 4, PVF::parameters::sign_symmetric(true));
+  ASSERT_EQ(designer.add_constraints(constraints_for(tm, 4, true, 12)), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
+  const auto& connection = designer.connection();
+  const std::size_t F = connection.number_of_faces();
+  typedef PVF::internal::Frame_field_iterations<std::remove_reference_t<decltype(connection)>, Solver> Iterations;
+  // Targets: the smooth field rotated by a face-dependent angle.
+  std::vector<Complex> targets = designer.coefficient_array();
+  for(std::size_t f = 0; f < F; ++f)
+  {
+    targets[4 * f] *= std::polar(1.0, 0.3 * std::sin(double(f)));
+    targets[4 * f + 2] *= std::polar(1.0, -0.2 * std::cos(double(f)));
+  }
+  std::vector<double> scale(F);
+  for(std::size_t f = 0; f < F; ++f)
+    scale[f] = 0.5 + 0.5 * std::abs(std::sin(0.7 * double(f)));
+  Iterations refactored(connection, designer.specifications(), Solver(), scale, 0.25);
+  std::vector<Complex> first, second, fresh;
+  ASSERT_TRUE(refactored.global_step(3.0, targets, first));
+  ASSERT_TRUE(refactored.global_step(40.0, targets, second));  // refactor_numeric()
+  Iterations from_scratch(connection, designer.specifications(), Solver(), scale, 0.25);
+  ASSERT_TRUE(from_scratch.global_step(40.0, targets, fresh));  // factor()
+  EXPECT_LT(relative_difference(fresh, second), 1e-12);
+  EXPECT_GT(relative_difference(first, second), 1e-3);  // the weights did change the field
+}
+
+TEST(SolverAgreement, RefactorWithNewWeightsMatchesFreshFactorization)
+{
+  check_refactor_matches_fresh_factorization<PVF::Simplicial_ldlt_solver>("SimplicialLDLT");
+#ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+  check_refactor_matches_fresh_factorization<PVF::Cholmod_sparse_solver>("CHOLMOD");
+#endif
+  check_refactor_matches_fresh_factorization<Dense_LDLT_traits>("dense");
 }
 
 // The default is CHOLMOD exactly when the build found it (CGAL_PVF_HAS_CHOLMOD,

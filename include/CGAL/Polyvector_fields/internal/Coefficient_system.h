@@ -131,22 +131,29 @@ public:
   {
     typename Factorization<SolverTraits>::Solver_scope scope;
     classify();
-    m_factorizations.clear();
-    // All blocks have one pattern: they share one symbolic analysis.
-    const std::size_t blocks = m_coupled ? 1 : m_degrees.size();
-    const auto analysis = std::make_shared<typename Factorization<SolverTraits>::Shared_analysis>();
-    for(std::size_t b = 0; b < blocks; ++b)
-    {
-      m_factorizations.emplace_back(new Factorization<SolverTraits>(m_solver_prototype));
-      m_factorizations.back()->share_analysis(analysis);
-    }
-    return factor_blocks(true);
+    return factor_new_pattern();
   }
 
-  // Refactors after a change of weights only (same pattern, same symbolic analysis).
+  // Refactors after a change of weights only (same pattern, same symbolic
+  // analysis): the new values are accumulated into the existing matrices. A
+  // term outside the pattern (a weight that went from zero to nonzero) sends
+  // it back to a new assembly and analysis.
   bool refactor_numeric()
   {
     typename Factorization<SolverTraits>::Solver_scope scope;
+    if(m_factorizations.empty() || m_matrices.size() != m_factorizations.size())
+      return factor_new_pattern();
+    Timer timer;
+    std::vector<char> complete(m_matrices.size(), 1);
+    for_each_block(m_matrices.size(), [&](std::size_t b) {
+      m_matrices[b].coeffs().setZero();
+      Assembler assembler{ nullptr, nullptr, &m_matrices[b], &complete[b] };
+      enumerate_terms(b, assembler);
+      return true;
+    });
+    m_times.assembly = timer.elapsed();
+    if(std::find(complete.begin(), complete.end(), 0) != complete.end())
+      return factor_new_pattern();
     return factor_blocks(false);
   }
 
@@ -240,11 +247,16 @@ private:
     const std::size_t* variable = nullptr;
   };
 
-  // A term |sum_j alpha_j x_j + gamma|^2, accumulated into the normal equations.
+  // A term |sum_j alpha_j x_j + gamma|^2, accumulated into the normal
+  // equations: the matrix as triplets, or into the entries of an assembled
+  // matrix of the same pattern (`complete` is cleared if one is missing); the
+  // right-hand side.
   struct Assembler
   {
     std::vector<Eigen::Triplet<Complex> >* triplets;
     Dense_vector* rhs;
+    Sparse_matrix* matrix = nullptr;
+    char* complete = nullptr;
 
     void add(const std::vector<std::size_t>& variable, const std::vector<Complex>& alpha, const Complex& gamma) const
     {
@@ -253,9 +265,28 @@ private:
         if(triplets)
           for(std::size_t j = 0; j < variable.size(); ++j)
             triplets->emplace_back(int(variable[i]), int(variable[j]), std::conj(alpha[i]) * alpha[j]);
+        if(matrix)
+          for(std::size_t j = 0; j < variable.size(); ++j)
+          {
+            Complex* entry = find_entry(*matrix, variable[i], variable[j]);
+            if(entry)
+              *entry += std::conj(alpha[i]) * alpha[j];
+            else
+              *complete = 0;
+          }
         if(rhs)
           (*rhs)[Eigen::Index(variable[i])] -= std::conj(alpha[i]) * gamma;
       }
+    }
+
+    // The stored entry (row, column) of a compressed matrix, or null.
+    static Complex* find_entry(Sparse_matrix& A, std::size_t row, std::size_t column)
+    {
+      const int* rows = A.innerIndexPtr();
+      const int* begin = rows + A.outerIndexPtr()[column];
+      const int* end = rows + A.outerIndexPtr()[column + 1];
+      const int* it = std::lower_bound(begin, end, int(row));
+      return (it != end && std::size_t(*it) == row) ? A.valuePtr() + (it - rows) : nullptr;
     }
   };
 
@@ -501,13 +532,23 @@ private:
     }
   }
 
-  bool factor_blocks(bool analyse)
+  // New factorizations sharing a new analysis, on matrices assembled anew.
+  bool factor_new_pattern()
   {
+    m_factorizations.clear();
+    // All blocks have one pattern: they share one symbolic analysis.
+    const std::size_t blocks = m_coupled ? 1 : m_degrees.size();
+    const auto analysis = std::make_shared<typename Factorization<SolverTraits>::Shared_analysis>();
+    for(std::size_t b = 0; b < blocks; ++b)
+    {
+      m_factorizations.emplace_back(new Factorization<SolverTraits>(m_solver_prototype));
+      m_factorizations.back()->share_analysis(analysis);
+    }
     Timer timer;
-    const std::size_t blocks = m_factorizations.size();
-    // Kept alive as members: some solvers (Eigen's iterative ones) keep a reference.
+    // Kept alive as members: some solvers (Eigen's iterative ones) keep a
+    // reference, and refactor_numeric() refills them.
     std::vector<Sparse_matrix>& matrices = m_matrices;
-    matrices.resize(blocks);
+    matrices.assign(blocks, Sparse_matrix());
     for_each_block(blocks, [&](std::size_t b) {
       std::vector<Eigen::Triplet<Complex> > triplets;
       triplets.reserve(m_connection.interior_edges().size() * 4 + m_block_size);
@@ -519,6 +560,14 @@ private:
       return true;
     });
     m_times.assembly = timer.elapsed();
+    return factor_blocks(true);
+  }
+
+  // Analysis (when `analyse`) and numeric factorization of the assembled blocks.
+  bool factor_blocks(bool analyse)
+  {
+    const std::size_t blocks = m_factorizations.size();
+    std::vector<Sparse_matrix>& matrices = m_matrices;
     Timer factor_timer;
     if(m_block_size > 0)
     {

@@ -30,6 +30,7 @@
 #include <cstring>
 #include <map>
 #include <random>
+#include <thread>
 #include <vector>
 
 #if defined(__unix__) || defined(__APPLE__)
@@ -225,6 +226,37 @@ TEST(Parallel, OpenBlasThreadCountIsRestored)
   EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), before);
 #  else
   GTEST_SKIP() << "no dlsym";
+#  endif
+}
+
+// Designs running at the same time in two threads of a program: the shared
+// OpenBLAS setting stays at one thread until both are done, so that both
+// fields are those of a design run alone, and it is restored at the end.
+TEST(Parallel, ConcurrentCholmodDesignsInTwoThreads)
+{
+  const Mesh& tm = bumpy_10k();
+  const std::vector<Constraint> frames = frame_constraints(tm);
+  const std::vector<Constraint> others = random_constraints(tm, num_faces(tm) / 50, 2, 9);
+  const auto alone_a = design<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, frames);
+  const auto alone_b = design<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others);
+#  if defined(__unix__) || defined(__APPLE__)
+  typedef int (*Get_threads)();
+  void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  const int before = get ? reinterpret_cast<Get_threads>(get)() : 0;
+#  endif
+  for(int round = 0; round < 3; ++round)
+  {
+    std::vector<Complex> a, b;
+    std::thread first([&] { a = design<PVF::Cholmod_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, frames); });
+    std::thread second([&] { b = design<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others); });
+    first.join();
+    second.join();
+    expect_bit_identical(alone_a, a);
+    expect_bit_identical(alone_b, b);
+  }
+#  if defined(__unix__) || defined(__APPLE__)
+  if(get)
+    EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), before);
 #  endif
 }
 #endif

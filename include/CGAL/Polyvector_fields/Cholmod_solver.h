@@ -50,7 +50,7 @@ namespace Polyvector_fields {
 ///
 /// It is a model of `SparseLinearAlgebraWithFactorTraits_d` on
 /// `std::complex<double>` (Eigen's `CholmodDecomposition` through
-/// `CGAL::Eigen_solver_traits`), to be given as the `SolverTraits` template
+/// `CGAL::Eigen_solver_traits`, its base class), to be given as the `SolverTraits` template
 /// parameter of `Polyvector_field_designer` or with the `sparse_linear_solver`
 /// named parameter. The package drives CHOLMOD directly when it receives this
 /// type: the symbolic analysis is done once for all the coefficient degrees of
@@ -68,9 +68,17 @@ namespace Polyvector_fields {
 /// factors, would compete with the parallel degrees, and would change the
 /// rounding between parallel and sequential runs.
 ///
+/// It is a type of its own (not a typedef) so that the package's CHOLMOD
+/// driver is chosen for it in every translation unit.
+///
 /// \sa `Default_sparse_solver`, `Simplicial_ldlt_solver`
-typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<std::complex<double> >, Eigen::Lower> >
-  Cholmod_sparse_solver;
+class Cholmod_sparse_solver
+  : public CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<std::complex<double> >, Eigen::Lower> >
+{
+public:
+  /// CHOLMOD's default settings.
+  Cholmod_sparse_solver() {}
+};
 
 } // namespace Polyvector_fields
 } // namespace CGAL

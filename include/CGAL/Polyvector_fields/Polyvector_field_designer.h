@@ -75,8 +75,8 @@ struct Design_statistics
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
 ///         `CGAL::Default` means the internal point map of the mesh
 /// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`;
-///         `CGAL::Default` means `Default_sparse_solver` (CHOLMOD when it was found at configure time,
-///         Eigen's `SimplicialLDLT` otherwise)
+///         by default `Default_sparse_solver` (CHOLMOD when it was found at configure time,
+///         Eigen's `SimplicialLDLT` otherwise), which `CGAL::Default` also means
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
 ///         with parallelism (TBB), the independent coefficient degrees are assembled, factored and solved
 ///         at the same time (with the package's own solvers `Cholmod_sparse_solver` and
@@ -85,7 +85,7 @@ struct Design_statistics
 template <typename TriangleMesh,
           typename Traits = CGAL::Default,
           typename VertexPointMap = CGAL::Default,
-          typename SolverTraits = CGAL::Default,
+          typename SolverTraits = Default_sparse_solver,  // the actual type, so that it is part of the class's name
           typename ConcurrencyTag = CGAL::Parallel_if_available_tag>
 class Polyvector_field_designer
 {

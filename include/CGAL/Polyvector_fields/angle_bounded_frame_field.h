@@ -52,7 +52,8 @@ struct Angle_bound_result
 /// constraint itself is below the bound (see `Angle_bound_result::minimum_angle`).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
-///         the two degrees of each global step are factored and solved in parallel with TBB; the result does not depend on it
+///         the two degrees of each global step are factored and solved in parallel with TBB (unless a constraint
+///         gives a single vector, which couples the degrees into one system); the result does not depend on it
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam ConstraintRange a range of `Face_constraint<face_descriptor, Vector_3>` (at most 2 vectors each)
 /// \tparam CoefficientMap a model of `WritablePropertyMap` from faces to `std::vector<std::complex<double>>`

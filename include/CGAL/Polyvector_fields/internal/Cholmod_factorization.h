@@ -39,6 +39,7 @@
 
 #include <cstring>
 #include <memory>
+#include <mutex>
 
 namespace CGAL {
 namespace Polyvector_fields {
@@ -46,11 +47,23 @@ namespace internal {
 
 typedef Eigen::CholmodDecomposition<Sparse_matrix, Eigen::Lower> Cholmod_decomposition;
 
+} // namespace internal
+
+class Cholmod_sparse_solver;  // Cholmod_solver.h
+
+namespace internal {
+
 // A `cholmod_common` that starts and finishes with its owner.
 class Cholmod_workspace
 {
 public:
-  Cholmod_workspace() { cholmod_start(&m_common); }
+  // CHOLMOD prints its warnings (a matrix not positive definite) on stdout by
+  // default; the package reports them as Error_code::SOLVER_FAILURE instead.
+  Cholmod_workspace()
+  {
+    cholmod_start(&m_common);
+    m_common.print = 0;
+  }
   ~Cholmod_workspace() { cholmod_finish(&m_common); }
   Cholmod_workspace(const Cholmod_workspace&) = delete;
   Cholmod_workspace& operator=(const Cholmod_workspace&) = delete;
@@ -70,40 +83,65 @@ private:
 // thread each, 8.9 s one degree after the other); and its results depend on
 // its number of threads in the last bits, so that a parallel run would not
 // be bit-identical to a sequential one. OpenBLAS is looked up at run time,
-// so any BLAS may be linked; the previous thread count is restored on exit.
+// so any BLAS may be linked. Its thread count is a process-wide setting:
+// scopes alive at the same time in several threads of a program share one
+// count of users, the first one in sets one thread and the last one out
+// restores the previous count. (This holds for OpenBLAS's pthreads build,
+// Debian's libopenblas0-pthread; its OpenMP build takes the count from each
+// calling thread's OpenMP setting instead.)
 class Single_threaded_blas_scope
 {
   typedef void (*Set_threads)(int);
   typedef int (*Get_threads)();
 
+  struct Shared_state
+  {
+    std::mutex mutex;
+    int users = 0;
+    int saved = 1;
+    Set_threads set = nullptr;  // non-null while the count is held at one
+  };
+
+  static Shared_state& state()
+  {
+    static Shared_state s;
+    return s;
+  }
+
 public:
   Single_threaded_blas_scope()
   {
+    Shared_state& s = state();
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if(s.users++ > 0)
+      return;
+    s.set = nullptr;
 #ifdef CGAL_PVF_HAS_DLSYM
     void* set = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
     void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
     if(set != nullptr && get != nullptr)
     {
-      m_saved = reinterpret_cast<Get_threads>(get)();
-      if(m_saved > 1)
+      s.saved = reinterpret_cast<Get_threads>(get)();
+      if(s.saved > 1)
       {
-        m_set = reinterpret_cast<Set_threads>(set);
-        m_set(1);
+        s.set = reinterpret_cast<Set_threads>(set);
+        s.set(1);
       }
     }
 #endif
   }
   ~Single_threaded_blas_scope()
   {
-    if(m_set != nullptr)
-      m_set(m_saved);
+    Shared_state& s = state();
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if(--s.users == 0 && s.set != nullptr)
+    {
+      s.set(s.saved);
+      s.set = nullptr;
+    }
   }
   Single_threaded_blas_scope(const Single_threaded_blas_scope&) = delete;
   Single_threaded_blas_scope& operator=(const Single_threaded_blas_scope&) = delete;
-
-private:
-  Set_threads m_set = nullptr;
-  int m_saved = 1;
 };
 
 // CHOLMOD's symbolic factor of one pattern, shared by the blocks of a system.
@@ -143,16 +181,15 @@ inline cholmod_sparse cholmod_view(const Sparse_matrix& A)
 }
 
 template <>
-class Factorization<CGAL::Eigen_solver_traits<Cholmod_decomposition> >
+class Factorization<Cholmod_sparse_solver>
 {
 public:
   typedef Cholmod_symbolic_analysis Shared_analysis;
   typedef Single_threaded_blas_scope Solver_scope;
   static constexpr bool is_thread_safe = true;
 
-  explicit Factorization(const CGAL::Eigen_solver_traits<Cholmod_decomposition>& =
-                           CGAL::Eigen_solver_traits<Cholmod_decomposition>())
-  {}
+  Factorization() {}
+  explicit Factorization(const Cholmod_sparse_solver&) {}
 
   ~Factorization()
   {
@@ -226,10 +263,11 @@ public:
     B.xtype = CHOLMOD_COMPLEX;
     B.dtype = CHOLMOD_DOUBLE;
     cholmod_common* common = m_workspace.get();
+    x.resize(b.size());  // before CHOLMOD allocates: nothing below throws
     cholmod_dense* X = cholmod_solve(CHOLMOD_A, m_factor, &B, common);
     if(X == nullptr)
       return false;
-    x = Eigen::Map<const Dense_vector>(static_cast<const Complex*>(X->x), Eigen::Index(m_factor->n));
+    std::memcpy(x.data(), X->x, std::size_t(x.size()) * sizeof(Complex));
     cholmod_free_dense(&X, common);
     return common->status == CHOLMOD_OK;
   }

@@ -27,19 +27,14 @@ using namespace pvf_bench;
 // Levels 1..4 (10k to 640k faces) for every variant; the package's default
 // (CHOLMOD, parallel) also runs the levels above (level 5: 2.56M faces) when
 // PVF_BENCH_MAX_LEVEL asks for them.
-void level_arguments(benchmark::internal::Benchmark* b)
+void add_levels(benchmark::internal::Benchmark* b, int last)
 {
-  for(int level = 1; level <= (std::min)(4, max_level()); ++level)
+  for(int level = 1; level <= last; ++level)
     b->Arg(level);
   b->Unit(benchmark::kMillisecond)->UseRealTime();
 }
-
-void all_level_arguments(benchmark::internal::Benchmark* b)
-{
-  for(int level = 1; level <= max_level(); ++level)
-    b->Arg(level);
-  b->Unit(benchmark::kMillisecond)->UseRealTime();
-}
+void level_arguments(benchmark::internal::Benchmark* b) { add_levels(b, (std::min)(4, max_level())); }
+void all_level_arguments(benchmark::internal::Benchmark* b) { add_levels(b, max_level()); }
 
 // Face frames and Levi-Civita connection.
 void BM_connection(benchmark::State& state)

@@ -137,7 +137,8 @@ Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t 
   if(!(theta_min > 0) || theta_min > CGAL_PI / 2 || !(tolerance >= 0))
     return Error_code::INVALID_PARAMETER;
 
-  std::unique_ptr<typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Designer> designer;
+  typedef internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag> Types;
+  std::unique_ptr<typename Types::Designer> designer;
   code = internal::smooth_frame_field<ConcurrencyTag>(tm, N, constraints, np, designer);
   if(code != Error_code::SUCCESS)
     return code;
@@ -145,10 +146,7 @@ Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t 
   const std::size_t F = connection.number_of_faces();
   std::vector<Complex> c = designer->coefficient_array(), targets(4 * F);
 
-  internal::Frame_field_iterations<std::remove_reference_t<decltype(connection)>,
-                                   typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Solver>
-    iterations(connection, designer->specifications(), designer->solver_prototype(), std::vector<double>(F, 1.0), 0.0,
-               internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::parallel);
+  typename Types::Iterations iterations = Types::iterations(*designer, std::vector<double>(F, 1.0), 0.0);
 
   // Smallest frame angle over the faces that are not fixed, and over all faces.
   auto smallest_angles = [&](double& free_faces, double& all_faces) {

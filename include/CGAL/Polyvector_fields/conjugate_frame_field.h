@@ -158,7 +158,8 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef std::complex<double> Complex;
-  typedef typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Geom_traits Geom_traits;
+  typedef internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag> Types;
+  typedef typename Types::Geom_traits Geom_traits;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
   const double orthogonality = choose_parameter(get_parameter(np, internal_np::orthogonality_weight), 0.0);
@@ -172,7 +173,7 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
   if(!(orthogonality >= 0) || !(tolerance > 0))
     return Error_code::INVALID_PARAMETER;
 
-  std::unique_ptr<typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Designer> designer;
+  std::unique_ptr<typename Types::Designer> designer;
   code = internal::smooth_frame_field<ConcurrencyTag>(tm, N, constraints, np, designer);
   if(code != Error_code::SUCCESS)
     return code;
@@ -201,10 +202,7 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
         return Error_code::NON_FINITE_VALUE;
 
   std::vector<Complex> c = designer->coefficient_array(), targets(4 * F);
-  internal::Frame_field_iterations<std::remove_reference_t<decltype(connection)>,
-                                   typename internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::Solver>
-    iterations(connection, designer->specifications(), designer->solver_prototype(), Khat, orthogonality,
-               internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag>::parallel);
+  typename Types::Iterations iterations = Types::iterations(*designer, Khat, orthogonality);
 
   // Residuals are measured on the field scaled to unit root mean square length.
   Conjugate_field_result r;

@@ -99,12 +99,22 @@ class Single_threaded_blas_scope
     std::mutex mutex;
     int users = 0;
     int saved = 1;
-    Set_threads set = nullptr;  // non-null while the count is held at one
+    bool held = false;  // the count is held at one by the scopes
+    Set_threads set = nullptr;
+    Get_threads get = nullptr;
+
+    Shared_state()
+    {
+#ifdef CGAL_PVF_HAS_DLSYM
+      set = reinterpret_cast<Set_threads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+      get = reinterpret_cast<Get_threads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+#endif
+    }
   };
 
   static Shared_state& state()
   {
-    static Shared_state s;
+    static Shared_state s;  // OpenBLAS looked up once
     return s;
   }
 
@@ -113,31 +123,21 @@ public:
   {
     Shared_state& s = state();
     std::lock_guard<std::mutex> lock(s.mutex);
-    if(s.users++ > 0)
+    if(s.users++ > 0 || s.set == nullptr || s.get == nullptr)
       return;
-    s.set = nullptr;
-#ifdef CGAL_PVF_HAS_DLSYM
-    void* set = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-    void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
-    if(set != nullptr && get != nullptr)
-    {
-      s.saved = reinterpret_cast<Get_threads>(get)();
-      if(s.saved > 1)
-      {
-        s.set = reinterpret_cast<Set_threads>(set);
-        s.set(1);
-      }
-    }
-#endif
+    s.saved = s.get();
+    s.held = (s.saved > 1);
+    if(s.held)
+      s.set(1);
   }
   ~Single_threaded_blas_scope()
   {
     Shared_state& s = state();
     std::lock_guard<std::mutex> lock(s.mutex);
-    if(--s.users == 0 && s.set != nullptr)
+    if(--s.users == 0 && s.held)
     {
       s.set(s.saved);
-      s.set = nullptr;
+      s.held = false;
     }
   }
   Single_threaded_blas_scope(const Single_threaded_blas_scope&) = delete;

@@ -13,6 +13,7 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
+#include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -22,6 +23,8 @@
 #include <cmath>
 #include <memory>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polyvector_fields {
@@ -35,7 +38,15 @@ struct Frame_field_types
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t, NamedParameters,
                                                              Default_sparse_solver>::type Solver;
   typedef Polyvector_field_designer<TriangleMesh, Geom_traits, Vertex_point_map, Solver, ConcurrencyTag> Designer;
-  static constexpr bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+  typedef Frame_field_iterations<typename Designer::Connection, Solver> Iterations;
+
+  // The global steps on the field of `designer` (its connection, hard
+  // constraints and solver), with data weights lambda * scale[f].
+  static Iterations iterations(const Designer& designer, std::vector<double> scale, double orthogonality_weight)
+  {
+    return Iterations(designer.connection(), designer.specifications(), designer.solver_prototype(), std::move(scale),
+                      orthogonality_weight, std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
+  }
 };
 
 // The iteration parameters common to both algorithms.

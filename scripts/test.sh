@@ -6,13 +6,39 @@
 # This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 # It is not part of CGAL.
 #
-# Installs what is missing, builds everything in build/ and runs all tests.
+# Installs what is missing, builds everything in build/ and runs all tests;
+# then builds the unit tests again in build-sanitize/ with AddressSanitizer and
+# UndefinedBehaviorSanitizer (GCC, -O1, assertions on) and runs them.
 # Exits non-zero when anything fails. Works from any directory.
+#   bash scripts/test.sh                  everything
+#   bash scripts/test.sh --no-sanitizers  only the first part
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+sanitizers=1
+for arg in "$@"; do
+  case "$arg" in
+    --no-sanitizers) sanitizers=0 ;;
+    -h|--help) echo "usage: bash scripts/test.sh [--no-sanitizers]"; exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg'" >&2; exit 2 ;;
+  esac
+done
+
+start=$(date +%s)
 bash scripts/install_dependencies.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON
 cmake --build build -j2
 # --no-tests=error: a build that registered no test must not pass silently.
 ctest --test-dir build --output-on-failure -j2 --no-tests=error
+echo "test.sh: release build and tests took $(( $(date +%s) - start )) s"
+
+if [ "$sanitizers" = 1 ]; then
+  # Debug keeps CGAL's and Eigen's assertions; the tests' own -O1 keeps them fast.
+  flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON \
+        "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
+  cmake --build build-sanitize -j2 --target pvf_unit_tests
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-sanitize --output-on-failure -j2 --no-tests=error -L unit
+  echo "test.sh: everything, sanitizers included, took $(( $(date +%s) - start )) s"
+fi

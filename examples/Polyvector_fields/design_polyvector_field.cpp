@@ -7,45 +7,55 @@
 
 // design_polyvector_field: the command-line designer.
 //
-// Reads a triangle mesh and constraints, designs the smoothest N-PolyVector
-// field, and writes the field (.rawfield), its singularities (.sings) and a
-// VTK file for ParaView. Frame fields (N = 4, sign-symmetric) can then be
-// optimised to bound their angles or to be conjugate (paper Section 4). With
-// no argument it designs a frame field on the bundled architectural mesh from
-// its 84 bundled constraints and writes output/inspired_mesh.{rawfield,sings,vtk}.
-// Run with --help for the options.
+// Reads a mesh and constraints, designs the smoothest N-PolyVector field, and
+// writes the field (.rawfield), its singularities (.sings) and a VTK file for
+// ParaView. Frame fields (N = 4, sign-symmetric) can then be optimised to
+// bound their angles or to be conjugate (paper Section 4). With no argument it
+// designs a frame field on the bundled architectural mesh from its 84 bundled
+// constraints and writes output/inspired_mesh.{rawfield,sings,vtk}. Run with
+// --help for the options.
 //
-// Errors are reported on one line of standard error with a non-zero exit
-// status; no output file is written unless every stage succeeded.
+// A polygon mesh or a polygon soup is repaired into a triangle mesh first (see
+// IO::read_triangle_mesh()), and the summary says what changed; --no-repair
+// refuses such a mesh instead. Errors are reported on one line of standard
+// error with a non-zero exit status: 2 for a bad command line, 1 otherwise.
+// Outputs are written all or none: every destination is checked before the
+// work starts, and the files are published only once every stage succeeded.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
 #include <CGAL/Polyvector_fields/IO/rawfield.h>
+#include <CGAL/Polyvector_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Polyvector_fields/IO/singularities.h>
 #include <CGAL/Polyvector_fields/IO/vtk.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/compute_field_roots.h>
+#include <CGAL/Polyvector_fields/compute_singularities.h>
 #include <CGAL/Polyvector_fields/conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/frame_field_measures.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
-#include <CGAL/Polyvector_fields/compute_field_roots.h>
-#include <CGAL/Polyvector_fields/compute_singularities.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -58,6 +68,7 @@
 #endif
 
 namespace PVF = CGAL::Polyvector_fields;
+namespace fs = std::filesystem;
 
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Point_3 Point;
@@ -80,12 +91,20 @@ struct Failure : std::runtime_error
 
 const char* usage =
   "usage: design_polyvector_field [options]\n"
-  "  --mesh FILE              triangle mesh (OFF, OBJ, PLY, ...); default: the bundled inspired_mesh.obj\n"
+  "input:\n"
+  "  --mesh FILE              mesh (.off, .obj, .ply, .stl); default: the bundled inspired_mesh.obj.\n"
+  "                           Polygon faces are triangulated and polygon soups repaired (duplicate\n"
+  "                           points merged, duplicate and degenerate faces removed, faces reoriented,\n"
+  "                           non-manifold vertices split); the summary says what changed\n"
+  "  --no-repair              refuse a mesh that needs a repair, with the reason\n"
+  "  --max-input-size MB      refuse input files larger than MB mebibytes (default 1024)\n"
+  "field:\n"
   "  --degree N               number of vectors per face, 1..32 (default 4)\n"
   "  --sign-symmetric         vectors come in pairs {u, -u} (N even): frame fields, N-RoSy of even N\n"
+  "constraints (face ids are 0-based positions in the mesh file):\n"
   "  --constraints FILE       constraint file: 'face_id x y z [x y z ...]' per line, '#' comments\n"
   "  --dmat-b FILE --dmat-bc FILE   libigl constraints: face ids (b) and vectors (bc)\n"
-  "  --soft WEIGHT            make every constraint soft with this weight (> 0)\n"
+  "  --soft WEIGHT            make every constraint soft with this weight, in [1e-8, 1e8]\n"
   "  --sharp-edges DEGREES    partial constraints along edges whose dihedral angle exceeds DEGREES\n"
   "  --random-constraints K   full constraints with random vectors on K random faces (see --seed)\n"
   "  --seed S                 seed of --random-constraints (default 1)\n"
@@ -94,19 +113,24 @@ const char* usage =
   "                           spread over the surface, to their principal curvature directions\n"
   "  --angle-bound DEGREES    optimise the field so that u and v make at least DEGREES (0, 90]\n"
   "  --conjugate              optimise the field to be conjugate (planar-quad remeshing)\n"
-  "  --orthogonality W        with --conjugate: weight W >= 0 pulling the field towards a cross field\n"
+  "  --orthogonality W        with --conjugate: weight W in [0, 1e30] pulling the field towards a cross field\n"
   "  --iterations K           maximum number of frame-field iterations (default 200 / 100)\n"
   "output (default when none is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
   "  --out-vtk FILE           write a legacy VTK file for ParaView\n"
+  "  --out-mesh FILE          write the (repaired) triangle mesh the outputs refer to, as OFF\n"
   "  --help                   print this help\n"
   "Without --mesh: the bundled <data>/inspired_mesh.obj and, unless other constraints are given,\n"
-  "its 84 constraints (--dmat-b/--dmat-bc), as a frame field (--degree 4 --sign-symmetric).\n";
+  "its 84 constraints (--dmat-b/--dmat-bc), as a frame field (--degree 4 --sign-symmetric).\n"
+  "Exit status: 0 on success, 2 for a bad command line, 1 for bad input or a failure; on failure\n"
+  "no output file is written.\n";
 
 struct Options
 {
   std::string mesh;
+  bool repair = true;
+  std::size_t max_input_bytes = std::size_t(1024) << 20;
   std::size_t degree = 4;
   bool sign_symmetric = false;
   std::string constraints, dmat_b, dmat_bc;
@@ -114,99 +138,128 @@ struct Options
   double sharp_degrees = -1;  // < 0: no sharp-edge constraints
   std::size_t random_constraints = 0;
   unsigned seed = 1;
-  std::string out_field, out_singularities, out_vtk;
-  // Frame fields.
   double curvature_percent = -1;  // < 0: none
   double angle_bound_degrees = -1;  // < 0: none
   bool conjugate = false;
   double orthogonality = 0;
   std::size_t iterations = 0;  // 0: the algorithm's default
+  std::string out_field, out_singularities, out_vtk, out_mesh;
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
 
   bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate; }
+  std::size_t vectors_per_constraint() const { return sign_symmetric ? degree / 2 : degree; }
 };
 
-double parse_number(const std::string& flag, const std::string& text)
+// ---------------------------------------------------------------------------
+// Stage 1: the command line. Numbers are read with the package's strict,
+// locale-independent parsers: "0x4", " 4" or "4abc" are refused.
+// ---------------------------------------------------------------------------
+class Command_line
 {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if(text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-    throw Failure(flag + " expects a finite number, got '" + text + "'", 2);
-  return value;
-}
+public:
+  Command_line(int argc, char** argv) : m_argc(argc), m_argv(argv) {}
 
-Options parse(int argc, char** argv)
+  bool next(std::string& flag)
+  {
+    if(++m_i >= m_argc)
+      return false;
+    flag = m_argv[m_i];
+    if(flag.rfind("--", 0) == 0 && flag != "--help" && !m_seen.insert(flag).second)
+      throw Failure(flag + " is given twice", 2);
+    m_flag = flag;
+    return true;
+  }
+
+  std::string text(const char* what = "a file name")
+  {
+    if(m_i + 1 >= m_argc)
+      throw Failure(m_flag + " expects " + what, 2);
+    const std::string value = m_argv[++m_i];
+    if(value.empty())
+      throw Failure(m_flag + " expects " + what + ", got an empty string", 2);
+    return value;
+  }
+
+  double number(double low, double high, bool low_open = false)
+  {
+    const std::string value = text("a number");
+    double x = 0;
+    const auto status = PVF::IO::internal::parse_double(value, x);
+    if(status != PVF::IO::internal::Token_status::OK || !(low_open ? x > low : x >= low) || !(x <= high))
+      throw Failure(m_flag + " expects a number in " + std::string(low_open ? "(" : "[") + format(low) + ", " +
+                      format(high) + "], got '" + value + "'", 2);
+    return x;
+  }
+
+  std::size_t integer(unsigned long long low, unsigned long long high)
+  {
+    const std::string value = text("an integer");
+    unsigned long long n = 0;
+    if(PVF::IO::internal::parse_integer(value, n) != PVF::IO::internal::Token_status::OK || n < low || n > high ||
+       value[0] == '+')
+      throw Failure(m_flag + " expects an integer in " + std::to_string(low) + ".." + std::to_string(high) + ", got '" +
+                      value + "'", 2);
+    return std::size_t(n);
+  }
+
+  static std::string format(double x)
+  {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  }
+
+private:
+  int m_argc;
+  char** m_argv;
+  int m_i = 0;
+  std::string m_flag;
+  std::set<std::string> m_seen;
+};
+
+Options parse_options(int argc, char** argv)
 {
   Options o;
   bool degree_given = false;
-  for(int i = 1; i < argc; ++i)
+  Command_line line(argc, argv);
+  std::string flag;
+  while(line.next(flag))
   {
-    const std::string flag = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw Failure(flag + " expects a value", 2);
-      return argv[++i];
-    };
-    auto integer = [&](double low, double high) {
-      const std::string text = value();
-      const double d = parse_number(flag, text);
-      if(d != std::floor(d) || d < low || d > high)
-        throw Failure(flag + " expects an integer in " + std::to_string(long(low)) + ".." + std::to_string(long(high)) +
-                      ", got '" + text + "'", 2);
-      return d;
-    };
     if(flag == "--help" || flag == "-h")
     {
       std::cout << usage;
       std::exit(EXIT_SUCCESS);
     }
-    else if(flag == "--mesh") o.mesh = value();
+    else if(flag == "--mesh") o.mesh = line.text();
+    else if(flag == "--no-repair") o.repair = false;
+    else if(flag == "--max-input-size") o.max_input_bytes = line.integer(1, 1u << 20) << 20;
     else if(flag == "--degree")
     {
-      o.degree = std::size_t(integer(1, 32));
+      o.degree = line.integer(1, 32);
       degree_given = true;
     }
     else if(flag == "--sign-symmetric") o.sign_symmetric = true;
-    else if(flag == "--constraints") o.constraints = value();
-    else if(flag == "--dmat-b") o.dmat_b = value();
-    else if(flag == "--dmat-bc") o.dmat_bc = value();
-    else if(flag == "--soft")
-    {
-      o.soft_weight = parse_number(flag, value());
-      if(!(o.soft_weight > 0))
-        throw Failure("--soft expects a weight > 0", 2);
-    }
+    else if(flag == "--constraints") o.constraints = line.text();
+    else if(flag == "--dmat-b") o.dmat_b = line.text();
+    else if(flag == "--dmat-bc") o.dmat_bc = line.text();
+    else if(flag == "--soft") o.soft_weight = line.number(1e-8, 1e8);
     else if(flag == "--sharp-edges")
     {
-      o.sharp_degrees = parse_number(flag, value());
-      if(o.sharp_degrees < 0 || o.sharp_degrees >= 180)
+      o.sharp_degrees = line.number(0, 180);
+      if(o.sharp_degrees >= 180)
         throw Failure("--sharp-edges expects an angle in [0, 180) degrees", 2);
     }
-    else if(flag == "--random-constraints") o.random_constraints = std::size_t(integer(0, 4e9));
-    else if(flag == "--seed") o.seed = unsigned(integer(0, 4e9));
-    else if(flag == "--curvature-constraints")
-    {
-      o.curvature_percent = parse_number(flag, value());
-      if(!(o.curvature_percent > 0) || o.curvature_percent > 100)
-        throw Failure("--curvature-constraints expects a percentage in (0, 100]", 2);
-    }
-    else if(flag == "--angle-bound")
-    {
-      o.angle_bound_degrees = parse_number(flag, value());
-      if(!(o.angle_bound_degrees > 0) || o.angle_bound_degrees > 90)
-        throw Failure("--angle-bound expects an angle in (0, 90] degrees", 2);
-    }
+    else if(flag == "--random-constraints") o.random_constraints = line.integer(0, 4000000000ull);
+    else if(flag == "--seed") o.seed = unsigned(line.integer(0, 4294967295ull));
+    else if(flag == "--curvature-constraints") o.curvature_percent = line.number(0, 100, true);
+    else if(flag == "--angle-bound") o.angle_bound_degrees = line.number(0, 90, true);
     else if(flag == "--conjugate") o.conjugate = true;
-    else if(flag == "--orthogonality")
-    {
-      o.orthogonality = parse_number(flag, value());
-      if(o.orthogonality < 0)
-        throw Failure("--orthogonality expects a weight >= 0", 2);
-    }
-    else if(flag == "--iterations") o.iterations = std::size_t(integer(1, 1e6));
-    else if(flag == "--out-field") o.out_field = value();
-    else if(flag == "--out-singularities") o.out_singularities = value();
-    else if(flag == "--out-vtk") o.out_vtk = value();
+    else if(flag == "--orthogonality") o.orthogonality = line.number(0, 1e30);
+    else if(flag == "--iterations") o.iterations = line.integer(1, 1000000);
+    else if(flag == "--out-field") o.out_field = line.text();
+    else if(flag == "--out-singularities") o.out_singularities = line.text();
+    else if(flag == "--out-vtk") o.out_vtk = line.text();
+    else if(flag == "--out-mesh") o.out_mesh = line.text();
     else
       throw Failure("unknown option '" + flag + "' (see --help)", 2);
   }
@@ -238,9 +291,9 @@ Options parse(int argc, char** argv)
     throw Failure("--orthogonality goes with --conjugate", 2);
   if(o.sign_symmetric && o.degree % 2 != 0)
     throw Failure("--sign-symmetric needs an even --degree", 2);
-  if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty())
+  if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty() && o.out_mesh.empty())
   {
-    const std::string stem = "output/" + std::filesystem::path(o.mesh).stem().string();
+    const std::string stem = "output/" + fs::path(o.mesh).stem().string();
     o.out_field = stem + ".rawfield";
     o.out_singularities = stem + ".sings";
     o.out_vtk = stem + ".vtk";
@@ -249,23 +302,205 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-void check(PVF::Error_code code, const std::string& what)
+void check(PVF::Error_code code, const std::string& what, const std::string& detail = std::string())
 {
   if(code != PVF::Error_code::SUCCESS)
-    throw Failure(what + ": " + PVF::get_error_message(code));
+    throw Failure(what + ": " + (detail.empty() ? PVF::get_error_message(code) : detail));
 }
+
+// ---------------------------------------------------------------------------
+// Stage 2: the outputs, checked before any work, written all or none.
+// ---------------------------------------------------------------------------
+class Output_files
+{
+public:
+  // Checks every destination: a distinct file (not an input, not another
+  // output, not a directory) in an existing, writable folder.
+  Output_files(const Options& o)
+  {
+    std::map<std::string, std::string> claimed;  // canonical path -> what claims it
+    for(const std::string* input : { &o.mesh, &o.constraints, &o.dmat_b, &o.dmat_bc })
+      if(!input->empty())
+        claimed[canonical(*input)] = "the input '" + *input + "'";
+    const std::pair<const char*, const std::string*> outputs[] = {
+      { "--out-field", &o.out_field }, { "--out-singularities", &o.out_singularities },
+      { "--out-vtk", &o.out_vtk }, { "--out-mesh", &o.out_mesh } };
+    for(const auto& output : outputs)
+    {
+      const std::string& path = *output.second;
+      if(path.empty())
+        continue;
+      const std::string key = canonical(path);
+      const auto previous = claimed.find(key);
+      if(previous != claimed.end())
+        throw Failure(std::string(output.first) + " '" + path + "' is the same file as " + previous->second, 2);
+      claimed[key] = std::string(output.first) + " '" + path + "'";
+      std::error_code ec;
+      if(fs::is_directory(path, ec))
+        throw Failure(std::string(output.first) + " '" + path + "' is a directory", 2);
+      fs::path folder = fs::path(path).parent_path();
+      if(folder.empty())
+        folder = ".";
+      if(!(o.default_outputs && folder == "output"))
+      {
+        if(!fs::exists(folder, ec))
+          throw Failure(std::string(output.first) + " '" + path + "': the folder '" + folder.string() + "' does not exist", 2);
+        if(!fs::is_directory(folder, ec))
+          throw Failure(std::string(output.first) + " '" + path + "': '" + folder.string() + "' is not a folder", 2);
+        if(::access(folder.c_str(), W_OK | X_OK) != 0)
+          throw Failure(std::string(output.first) + " '" + path + "': the folder '" + folder.string() + "' is not writable", 2);
+      }
+      m_destinations.push_back(path);
+    }
+  }
+
+  // Keeps the content of `path` until publish().
+  void set(const std::string& path, std::string content) { m_contents[path] = std::move(content); }
+
+  // Writes every content to a temporary file beside its destination, then
+  // renames them all into place. If any step fails, the destinations are as
+  // they were before (replaced files are restored) and no temporary remains.
+  void publish(bool create_default_folder)
+  {
+    if(create_default_folder)
+    {
+      std::error_code ec;
+      fs::create_directories("output", ec);
+      if(ec)
+        throw Failure("cannot create the folder output/: " + ec.message());
+    }
+    for(const std::string& path : m_destinations)
+    {
+      const std::string temporary = sibling(path, ".tmp-");
+      std::FILE* file = std::fopen(temporary.c_str(), "wbx");
+      if(file == nullptr)
+        throw Failure("cannot write '" + path + "': " + std::strerror(errno));
+      m_temporaries.push_back(temporary);
+      const std::string& content = m_contents[path];
+      bool ok = content.empty() || std::fwrite(content.data(), 1, content.size(), file) == content.size();
+      ok = (std::fflush(file) == 0) && ok;
+      ok = (std::fclose(file) == 0) && ok;
+      if(!ok)
+        throw Failure("cannot write '" + path + "': " + std::strerror(errno));
+    }
+    // Existing destinations are moved aside first, so that they can be restored.
+    std::vector<std::pair<std::string, std::string> > backups;  // destination, backup
+    std::vector<std::string> placed;
+    auto undo = [&]() {
+      std::error_code ec;
+      for(const std::string& path : placed)
+        fs::remove(path, ec);
+      for(const auto& b : backups)
+        fs::rename(b.second, b.first, ec);
+    };
+    for(std::size_t i = 0; i < m_destinations.size(); ++i)
+    {
+      const std::string& path = m_destinations[i];
+      std::error_code ec;
+      if(fs::exists(path, ec))
+      {
+        const std::string backup = sibling(path, ".old-");
+        fs::rename(path, backup, ec);
+        if(ec)
+        {
+          undo();
+          throw Failure("cannot replace '" + path + "': " + ec.message());
+        }
+        backups.emplace_back(path, backup);
+      }
+      fs::rename(m_temporaries[i], path, ec);
+      if(ec)
+      {
+        undo();
+        throw Failure("cannot write '" + path + "': " + ec.message());
+      }
+      placed.push_back(path);
+    }
+    m_temporaries.clear();
+    std::error_code ec;
+    for(const auto& b : backups)
+      fs::remove(b.second, ec);
+  }
+
+  ~Output_files()
+  {
+    std::error_code ec;
+    for(const std::string& t : m_temporaries)
+      fs::remove(t, ec);
+  }
+
+  const std::vector<std::string>& destinations() const { return m_destinations; }
+
+private:
+  static std::string canonical(const std::string& path)
+  {
+    std::error_code ec;
+    const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    return ec ? path : p.string();
+  }
+
+  // A fresh name beside `path`: .<name><tag><pid>-<counter>.
+  static std::string sibling(const std::string& path, const char* tag)
+  {
+    static unsigned counter = 0;
+    fs::path p(path);
+    p.replace_filename("." + p.filename().string() + tag + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    return p.string();
+  }
+
+  std::vector<std::string> m_destinations;
+  std::map<std::string, std::string> m_contents;
+  std::vector<std::string> m_temporaries;
+};
 
 struct Stopwatch
 {
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  double lap()
+  std::map<std::string, double> times;
+  void lap(const std::string& stage)
   {
     const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - start).count();
+    times[stage] += std::chrono::duration<double>(now - start).count();
     start = now;
-    return seconds;
   }
 };
+
+// ---------------------------------------------------------------------------
+// Stage 3: the mesh, repaired unless --no-repair.
+// ---------------------------------------------------------------------------
+struct Input_mesh
+{
+  Mesh tm;
+  PVF::IO::Mesh_repair_report report;
+  std::vector<std::vector<Face> > faces_of_file_face;  // file face id -> faces of tm
+};
+
+Input_mesh load_mesh(const Options& o)
+{
+  Input_mesh input;
+  std::string message;
+  const PVF::Error_code code = PVF::IO::read_triangle_mesh(
+    o.mesh, input.tm, input.report,
+    PVF::parameters::repair(o.repair, PVF::parameters::maximum_file_size(o.max_input_bytes,
+                                                                          PVF::parameters::error_message(message))));
+  if(code != PVF::Error_code::SUCCESS)
+  {
+    const bool repairable = code == PVF::Error_code::NON_TRIANGLE_FACE || code == PVF::Error_code::DUPLICATE_FACE ||
+                            code == PVF::Error_code::NON_MANIFOLD_MESH ||
+                            (code == PVF::Error_code::DEGENERATE_FACE && message.find("repeats") != std::string::npos);
+    throw Failure("mesh '" + o.mesh + "': " + message +
+                  (!o.repair && repairable ? " (without --no-repair it would be repaired)" : ""));
+  }
+  input.faces_of_file_face.resize(input.report.file_faces);
+  std::size_t i = 0;
+  for(Face f : faces(input.tm))
+    input.faces_of_file_face[input.report.source_face[i++]].push_back(f);
+  return input;
+}
+
+// ---------------------------------------------------------------------------
+// Stage 4: the constraints.
+// ---------------------------------------------------------------------------
 
 // Partial constraints along sharp edges: each face beside an edge whose
 // dihedral angle (between the face normals) exceeds the threshold gets the
@@ -289,10 +524,13 @@ std::vector<Constraint> sharp_edge_constraints(const Mesh& tm, double degrees, s
     const double angle = std::acos((std::max)(-1.0, (std::min)(1.0, cosine)));
     if(angle <= threshold)
       continue;
-    Vector d = tm.point(target(h, tm)) - tm.point(source(h, tm));
-    d = d / std::sqrt(d.squared_length());
-    edges_of_face[f].emplace_back(angle, d);
-    edges_of_face[g].emplace_back(angle, d);
+    // The direction, scaled first so that its squared length cannot overflow.
+    const std::array<double, 3> d = PVF::internal::scaled_difference(PVF::internal::to_array(tm.point(target(h, tm))),
+                                                                     PVF::internal::to_array(tm.point(source(h, tm))));
+    const double length = std::sqrt(PVF::internal::dot(d, d));
+    const Vector direction(d[0] / length, d[1] / length, d[2] / length);
+    edges_of_face[f].emplace_back(angle, direction);
+    edges_of_face[g].emplace_back(angle, direction);
   }
   std::vector<Constraint> constraints;
   for(auto& entry : edges_of_face)
@@ -309,279 +547,425 @@ std::vector<Constraint> sharp_edge_constraints(const Mesh& tm, double degrees, s
   return constraints;
 }
 
-// Writes every output under a temporary name first and renames them all at the
-// end, so that a failure leaves no output behind.
-class Output_set
+struct Constraint_set
 {
-public:
-  std::string temporary(const std::string& destination)
-  {
-    const std::string path = destination + ".partial";
-    m_pending.emplace_back(path, destination);
-    return path;
-  }
-  void commit()
-  {
-    for(const auto& p : m_pending)
-    {
-      std::error_code error;
-      std::filesystem::rename(p.first, p.second, error);
-      if(error)
-        throw Failure("cannot write " + p.second + ": " + error.message());
-    }
-    m_pending.clear();
-  }
-  ~Output_set()
-  {
-    for(const auto& p : m_pending)
-      std::remove(p.first.c_str());
-  }
+  std::vector<Constraint> list;
+  std::size_t from_files = 0, random = 0, sharp = 0, from_curvature = 0;
+  std::string note;  // said in the summary
 
-private:
-  std::vector<std::pair<std::string, std::string> > m_pending;
+  std::set<Face> faces() const
+  {
+    std::set<Face> s;
+    for(const Constraint& c : list)
+      s.insert(c.face);
+    return s;
+  }
 };
 
-int run(const Options& o)
+// The constraints of the files, on the faces of the file: a face that the
+// repair triangulated passes its constraint to each of its triangles.
+void add_file_constraints(const Options& o, const Input_mesh& input, Constraint_set& set)
 {
-  Stopwatch clock;
-  std::map<std::string, double> times;
-
-  Mesh tm;
-  if(!std::filesystem::exists(o.mesh))
-    throw Failure("cannot open mesh file '" + o.mesh + "'");
-  if(!CGAL::IO::read_polygon_mesh(o.mesh, tm) || CGAL::is_empty(tm))
-    throw Failure("cannot read a polygon mesh from '" + o.mesh + "'");
-  if(!CGAL::is_triangle_mesh(tm))
-    throw Failure("'" + o.mesh + "' is not a triangle mesh");
-  times["load mesh"] = clock.lap();
-
-  PVF::Polyvector_field_designer<Mesh> designer(tm, o.degree, PVF::parameters::sign_symmetric(o.sign_symmetric));
-  check(designer.status(), "mesh '" + o.mesh + "'");
-  times["frames and connection"] = clock.lap();
-
-  std::vector<Constraint> constraints;
+  typedef PVF::Face_constraint<std::size_t, Vector> Id_constraint;
+  std::vector<Id_constraint> by_id;
+  std::string message;
+  const auto np = PVF::parameters::expected_degree(
+    o.vectors_per_constraint(),
+    PVF::parameters::maximum_file_size(o.max_input_bytes, PVF::parameters::error_message(message)));
   if(!o.constraints.empty())
-    check(PVF::IO::read_constraints(o.constraints, tm, constraints), "constraints '" + o.constraints + "'");
+    check(PVF::IO::read_constraints_by_id(o.constraints, input.report.file_faces, by_id, np),
+          "constraints '" + o.constraints + "'", message);
   if(!o.dmat_b.empty())
   {
-    std::vector<Constraint> dmat;
-    check(PVF::IO::read_dmat_constraints(o.dmat_b, o.dmat_bc, tm, dmat), "dmat constraints");
-    constraints.insert(constraints.end(), dmat.begin(), dmat.end());
+    std::vector<Id_constraint> dmat;
+    check(PVF::IO::read_dmat_constraints_by_id(o.dmat_b, o.dmat_bc, input.report.file_faces, dmat, np),
+          "constraints '" + o.dmat_b + "', '" + o.dmat_bc + "'", message);
+    std::set<std::size_t> ids;
+    for(const Id_constraint& c : by_id)
+      ids.insert(c.face);
+    for(const Id_constraint& c : dmat)
+      if(ids.count(c.face))
+        throw Failure("constraints: face " + std::to_string(c.face) + " is constrained by both --constraints and --dmat-b");
+    by_id.insert(by_id.end(), dmat.begin(), dmat.end());
   }
-  if(o.random_constraints > 0)
+  for(const Id_constraint& c : by_id)
   {
-    if(o.random_constraints > num_faces(tm))
-      throw Failure("--random-constraints asks for more faces than the mesh has");
-    std::mt19937 rng(o.seed);
-    std::uniform_real_distribution<double> coordinate(-1, 1);
-    std::set<Face> constrained;
-    for(const Constraint& c : constraints)
-      constrained.insert(c.face);
-    const std::vector<Face> all(faces(tm).begin(), faces(tm).end());
-    std::size_t added = 0;
-    while(added < o.random_constraints && constrained.size() < all.size())
-    {
-      const Face f = all[rng() % all.size()];
-      if(!constrained.insert(f).second)
-        continue;
-      Constraint c{ f, {} };
-      for(std::size_t k = 0; k < (o.sign_symmetric ? o.degree / 2 : o.degree); ++k)
-        c.vectors.push_back(Vector(coordinate(rng), coordinate(rng), coordinate(rng)));
-      constraints.push_back(c);
-      ++added;
-    }
+    const auto& targets = input.faces_of_file_face[c.face];
+    if(targets.empty())
+      throw Failure("constraint on face " + std::to_string(c.face) +
+                    ": the repair removed that face (a duplicate or degenerate face)");
+    for(Face f : targets)
+      set.list.push_back(Constraint{ f, c.vectors, c.weight });
   }
-  std::size_t sharp = 0;
+  set.from_files = set.list.size();
+}
+
+void add_random_constraints(const Options& o, const Mesh& tm, Constraint_set& set)
+{
+  if(o.random_constraints == 0)
+    return;
+  if(o.random_constraints > num_faces(tm))
+    throw Failure("--random-constraints " + std::to_string(o.random_constraints) + " asks for more faces than the mesh's " +
+                  std::to_string(num_faces(tm)));
+  std::mt19937 rng(o.seed);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::set<Face> constrained = set.faces();
+  const std::vector<Face> all(faces(tm).begin(), faces(tm).end());
+  while(set.random < o.random_constraints && constrained.size() < all.size())
+  {
+    const Face f = all[rng() % all.size()];
+    if(!constrained.insert(f).second)
+      continue;
+    Constraint c{ f, {} };
+    for(std::size_t k = 0; k < o.vectors_per_constraint(); ++k)
+      c.vectors.push_back(Vector(coordinate(rng), coordinate(rng), coordinate(rng)));
+    set.list.push_back(c);
+    ++set.random;
+  }
+}
+
+// Curvature, estimated once when a result needs it.
+struct Curvature
+{
+  bool estimated = false;
+  PVF::Error_code status = PVF::Error_code::SUCCESS;
+  Mesh::Property_map<Face, Curvatures> map;
+};
+
+Curvature& estimate_curvature(Mesh& tm, Curvature& curvature)
+{
+  if(!curvature.estimated)
+  {
+    curvature.map = tm.add_property_map<Face, Curvatures>("f:pvf_curvatures").first;
+    curvature.status = PVF::estimate_principal_curvatures(tm, curvature.map);
+    curvature.estimated = true;
+  }
+  return curvature;
+}
+
+Constraint_set gather_constraints(const Options& o, Input_mesh& input, Curvature& curvature, Stopwatch& clock)
+{
+  Constraint_set set;
+  add_file_constraints(o, input, set);
+  add_random_constraints(o, input.tm, set);
   if(o.sharp_degrees >= 0)
   {
-    std::set<Face> constrained;
-    for(const Constraint& c : constraints)
-      constrained.insert(c.face);
-    const auto edge_constraints =
-      sharp_edge_constraints(tm, o.sharp_degrees, o.sign_symmetric ? o.degree / 2 : o.degree, constrained);
-    sharp = edge_constraints.size();
-    constraints.insert(constraints.end(), edge_constraints.begin(), edge_constraints.end());
+    const auto sharp = sharp_edge_constraints(input.tm, o.sharp_degrees, o.vectors_per_constraint(), set.faces());
+    set.sharp = sharp.size();
+    set.list.insert(set.list.end(), sharp.begin(), sharp.end());
   }
-  // Curvature: for curvature constraints, the conjugate field, and the VTK output of frame fields.
-  auto curvatures = tm.add_property_map<Face, Curvatures>("f:pvf_curvatures").first;
-  const bool has_curvature = o.frame_field();
-  std::size_t from_curvature = 0;
-  if(has_curvature)
-  {
-    times["constraints"] += clock.lap();
-    check(PVF::estimate_principal_curvatures(tm, curvatures), "curvature");
-    times["curvature"] = clock.lap();
-  }
+  clock.lap("constraints");
   if(o.curvature_percent > 0)
   {
+    check(estimate_curvature(input.tm, curvature).status, "curvature");
+    clock.lap("curvature");
     std::vector<Constraint> principal;
-    check(PVF::select_curvature_constraints(tm, curvatures, principal,
+    check(PVF::select_curvature_constraints(input.tm, curvature.map, principal,
                                             PVF::parameters::constrained_fraction(o.curvature_percent / 100)),
           "curvature constraints");
-    std::set<Face> constrained;
-    for(const Constraint& c : constraints)
-      constrained.insert(c.face);
+    std::set<Face> constrained = set.faces();
     for(const Constraint& c : principal)
       if(constrained.insert(c.face).second)
       {
-        constraints.push_back(c);
-        ++from_curvature;
+        set.list.push_back(c);
+        ++set.from_curvature;
       }
+    if(set.from_curvature == 0)
+      set.note = "no face is anisotropic enough for a curvature constraint (|k1 - k2| / (|k1| + |k2|) >= 0.5)";
   }
   if(o.soft_weight > 0)
-    for(Constraint& c : constraints)
+    for(Constraint& c : set.list)
       c.weight = o.soft_weight;
+  clock.lap("constraints");
+  return set;
+}
+
+// ---------------------------------------------------------------------------
+// Stage 5: the field, and its optimisation for frame fields.
+// ---------------------------------------------------------------------------
+typedef Mesh::Property_map<Face, std::vector<Complex> > Coefficient_map;
+
+struct Field
+{
+  Coefficient_map coefficients;
+  PVF::Design_statistics statistics;
+  std::size_t components = 0;
   std::size_t full = 0, partial = 0;
-  for(std::size_t i = 0; i < constraints.size(); ++i)
+  double smooth_energy = 0;
+  std::string frame_report;
+};
+
+// The message for a refused constraint: what is wrong with which face.
+std::string constraint_failure(PVF::Error_code code, const Constraint& c, const Options& o)
+{
+  std::ostringstream m;
+  m << "constraint on face " << std::size_t(c.face) << ": ";
+  if(code == PVF::Error_code::VALUE_OUT_OF_RANGE)
   {
-    const Constraint& c = constraints[i];
+    // The first vector whose length L has L^N outside [1e-100, 1e100].
+    for(const Vector& v : c.vectors)
+    {
+      std::array<double, 3> w = { v.x(), v.y(), v.z() };
+      const int e = PVF::internal::scale_to_unit({ &w });
+      const double log10_length = std::log10(std::sqrt(PVF::internal::dot(w, w))) + e * std::log10(2.0);
+      if(std::abs(double(o.degree) * log10_length) > 100)
+      {
+        m << "a vector of length " << std::pow(10.0, log10_length) << " is out of range for degree " << o.degree
+          << " (the package needs 1e-100 <= length^" << o.degree << " <= 1e100)";
+        return m.str();
+      }
+    }
+    m << PVF::get_error_message(code);
+  }
+  else
+    m << PVF::get_error_message(code);
+  return m.str();
+}
+
+Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints, Curvature& curvature, Stopwatch& clock)
+{
+  Field field;
+  PVF::Polyvector_field_designer<Mesh> designer(tm, o.degree, PVF::parameters::sign_symmetric(o.sign_symmetric));
+  check(designer.status(), "mesh '" + o.mesh + "'");
+  field.components = designer.connection().number_of_components();
+  clock.lap("frames and connection");
+  for(const Constraint& c : constraints.list)
+  {
     const PVF::Error_code code = designer.add_constraint(c);
     if(code != PVF::Error_code::SUCCESS)
-      throw Failure("constraint on face " + std::to_string(std::size_t(c.face)) + ": " + PVF::get_error_message(code));
-    (c.vectors.size() == (o.sign_symmetric ? o.degree / 2 : o.degree) ? full : partial) += 1;
+      throw Failure(constraint_failure(code, c, o));
+    (c.vectors.size() == o.vectors_per_constraint() ? field.full : field.partial) += 1;
   }
-  times["constraints"] += clock.lap();
+  field.coefficients = tm.add_property_map<Face, std::vector<Complex> >("f:pvf_coefficients").first;
+  check(designer.solve(field.coefficients), "design");
+  clock.lap("design");
+  field.statistics = designer.statistics();
+  field.smooth_energy = PVF::smoothness_energy(tm, o.degree, field.coefficients);
 
-  auto coefficients = tm.add_property_map<Face, std::vector<Complex> >("f:pvf_coefficients").first;
-  auto roots = tm.add_property_map<Face, std::vector<Vector> >("f:pvf_roots").first;
-  check(designer.solve(coefficients), "design");
-  clock.lap();
-  const PVF::Design_statistics& statistics = designer.statistics();
-  times["assembly"] = statistics.assembly;
-  times["factorization"] = statistics.factorization;
-  times["solve"] = statistics.solve;
-
-  const double smooth_energy = PVF::smoothness_energy(tm, o.degree, coefficients);
-
-  // Frame-field optimisation (Section 4), from the same constraints.
-  std::ostringstream frame_report;
+  std::ostringstream report;
   if(o.angle_bound_degrees > 0)
   {
     PVF::Angle_bound_result result;
     const auto np = PVF::parameters::angle_bound(o.angle_bound_degrees * CGAL_PI / 180);
-    check(o.iterations ? PVF::design_angle_bounded_frame_field(tm, 4, constraints, coefficients, result,
+    check(o.iterations ? PVF::design_angle_bounded_frame_field(tm, 4, constraints.list, field.coefficients, result,
                                                                 np.number_of_iterations(o.iterations))
-                       : PVF::design_angle_bounded_frame_field(tm, 4, constraints, coefficients, result, np),
+                       : PVF::design_angle_bounded_frame_field(tm, 4, constraints.list, field.coefficients, result, np),
           "angle bound");
-    frame_report << "angle bound     " << o.angle_bound_degrees << " degrees: " << (result.converged ? "converged" : "NOT converged")
-                 << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
-                 << " degrees (free faces), " << result.minimum_angle * 180 / CGAL_PI << " degrees (all faces)\n";
-    times["frame field"] = clock.lap();
+    report << "angle bound     " << o.angle_bound_degrees << " degrees: " << (result.converged ? "converged" : "NOT converged")
+           << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
+           << " degrees (free faces), " << result.minimum_angle * 180 / CGAL_PI << " degrees (all faces)\n";
+    clock.lap("frame field");
   }
   if(o.conjugate)
   {
+    check(estimate_curvature(tm, curvature).status, "curvature");
+    clock.lap("curvature");
     PVF::Conjugate_field_result result;
-    const auto np = PVF::parameters::principal_curvature_map(curvatures,
+    const auto np = PVF::parameters::principal_curvature_map(curvature.map,
                                                              PVF::parameters::orthogonality_weight(o.orthogonality));
-    check(o.iterations ? PVF::design_conjugate_frame_field(tm, 4, constraints, coefficients, result,
+    check(o.iterations ? PVF::design_conjugate_frame_field(tm, 4, constraints.list, field.coefficients, result,
                                                             np.number_of_iterations(o.iterations))
-                       : PVF::design_conjugate_frame_field(tm, 4, constraints, coefficients, result, np),
+                       : PVF::design_conjugate_frame_field(tm, 4, constraints.list, field.coefficients, result, np),
           "conjugate field");
-    frame_report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
-                 << " iterations (orthogonality weight " << o.orthogonality << "); residual sum |u^T S v| (unit-size field): "
-                 << result.residual_history.front() << " -> free faces " << result.free_residual << ", constrained faces "
-                 << result.constrained_residual << ", all faces " << result.residual << "\n";
-    times["frame field"] = clock.lap();
+    report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
+           << " iterations (orthogonality weight " << o.orthogonality << "); residual sum |u^T S v| (unit-size field): "
+           << result.residual_history.front() << " -> free faces " << result.free_residual << ", constrained faces "
+           << result.constrained_residual << ", all faces " << result.residual << "\n";
+    clock.lap("frame field");
   }
+  field.frame_report = report.str();
+  return field;
+}
 
-  const auto np = PVF::parameters::sign_symmetric(o.sign_symmetric);
-  check(PVF::compute_field_roots(tm, o.degree, coefficients, roots, np), "roots");
-  times["roots"] = clock.lap();
-
+// ---------------------------------------------------------------------------
+// Stage 6: what the field is: roots, singularities, energy, diagnostics.
+// ---------------------------------------------------------------------------
+struct Analysis
+{
+  Mesh::Property_map<Face, std::vector<Vector> > roots;
   std::vector<PVF::Singularity<Vertex> > singularities;
   std::vector<Vertex> undefined;
-  check(PVF::compute_singularities(tm, o.degree, coefficients, std::back_inserter(singularities),
-                                   std::back_inserter(undefined)),
-        "singularities");
-  times["singularities"] = clock.lap();
-  const double energy = PVF::smoothness_energy(tm, o.degree, coefficients);
+  double energy = 0;
+  PVF::IO::Face_scalar_arrays face_arrays;  // for the VTK file
+  std::string note;
+};
 
-  if(o.default_outputs)
+Analysis analyse_field(const Options& o, Mesh& tm, const Field& field, Curvature& curvature, Stopwatch& clock)
+{
+  Analysis a;
+  a.roots = tm.add_property_map<Face, std::vector<Vector> >("f:pvf_roots").first;
+  check(PVF::compute_field_roots(tm, o.degree, field.coefficients, a.roots, PVF::parameters::sign_symmetric(o.sign_symmetric)),
+        "roots");
+  clock.lap("roots");
+  check(PVF::compute_singularities(tm, o.degree, field.coefficients, std::back_inserter(a.singularities),
+                                   std::back_inserter(a.undefined)),
+        "singularities");
+  clock.lap("singularities");
+  a.energy = PVF::smoothness_energy(tm, o.degree, field.coefficients);
+  if(o.out_vtk.empty() || !(o.sign_symmetric && o.degree == 4))
+    return a;
+  // Frame-field diagnostics for the VTK file; they never fail the run.
+  auto angle_map = tm.add_property_map<Face, double>("f:pvf_angle").first;
+  if(PVF::compute_frame_angles(tm, field.coefficients, angle_map) == PVF::Error_code::SUCCESS)
   {
-    std::error_code error;
-    std::filesystem::create_directories("output", error);
-    if(error)
-      throw Failure("cannot create the folder output/: " + error.message());
+    std::vector<double> angles;
+    for(Face f : faces(tm))
+      angles.push_back(angle_map[f] * 180 / CGAL_PI);
+    a.face_arrays.emplace_back("min_angle_degrees", angles);
   }
-  Output_set outputs;
+  tm.remove_property_map(angle_map);
+  if(o.frame_field())
+  {
+    if(estimate_curvature(tm, curvature).status != PVF::Error_code::SUCCESS)
+      a.note = "the VTK file has no conjugacy_deviation: the curvature could not be estimated (" +
+               std::string(PVF::get_error_message(curvature.status)) + ")";
+    else
+    {
+      auto deviation_map = tm.add_property_map<Face, double>("f:pvf_deviation").first;
+      if(PVF::compute_conjugacy_deviation(tm, field.coefficients, curvature.map, deviation_map) == PVF::Error_code::SUCCESS)
+      {
+        std::vector<double> deviation;
+        for(Face f : faces(tm))
+          deviation.push_back(deviation_map[f]);
+        a.face_arrays.emplace_back("conjugacy_deviation", deviation);
+      }
+      tm.remove_property_map(deviation_map);
+    }
+  }
+  clock.lap("diagnostics");
+  return a;
+}
+
+// ---------------------------------------------------------------------------
+// Stage 7: the files.
+// ---------------------------------------------------------------------------
+void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& constraints, const Analysis& a,
+                   Output_files& outputs, Stopwatch& clock)
+{
+  auto to_string = [](auto&& write, const std::string& what) {
+    std::ostringstream s;
+    check(write(s), "writing " + what);
+    return s.str();
+  };
   if(!o.out_field.empty())
-    check(PVF::IO::write_rawfield(outputs.temporary(o.out_field), tm, roots, o.degree), "writing " + o.out_field);
+    outputs.set(o.out_field, to_string([&](std::ostream& s) { return PVF::IO::write_rawfield(s, tm, a.roots, o.degree); },
+                                       o.out_field));
   if(!o.out_singularities.empty())
-    check(PVF::IO::write_singularities(outputs.temporary(o.out_singularities), tm, o.degree, singularities),
-          "writing " + o.out_singularities);
+    outputs.set(o.out_singularities,
+                to_string([&](std::ostream& s) { return PVF::IO::write_singularities(s, tm, o.degree, a.singularities); },
+                          o.out_singularities));
   if(!o.out_vtk.empty())
   {
     std::vector<Face> constrained;
-    for(const Constraint& c : constraints)
+    for(const Constraint& c : constraints.list)
       constrained.push_back(c.face);
-    PVF::IO::Face_scalar_arrays arrays;
-    if(o.sign_symmetric && o.degree == 4)
-    {
-      std::vector<double> angles;
-      auto angle_map = tm.add_property_map<Face, double>("f:pvf_angle").first;
-      check(PVF::compute_frame_angles(tm, coefficients, angle_map), "frame angles");
-      for(Face f : faces(tm))
-        angles.push_back(angle_map[f] * 180 / CGAL_PI);
-      arrays.emplace_back("min_angle_degrees", angles);
-      tm.remove_property_map(angle_map);
-    }
-    if(has_curvature)
-    {
-      std::vector<double> deviation;
-      auto deviation_map = tm.add_property_map<Face, double>("f:pvf_deviation").first;
-      check(PVF::compute_conjugacy_deviation(tm, coefficients, curvatures, deviation_map), "conjugacy deviation");
-      for(Face f : faces(tm))
-        deviation.push_back(deviation_map[f]);
-      arrays.emplace_back("conjugacy_deviation", deviation);
-      tm.remove_property_map(deviation_map);
-    }
-    check(PVF::IO::write_vtk(outputs.temporary(o.out_vtk), tm, roots, o.degree, singularities, arrays, constrained),
-          "writing " + o.out_vtk);
+    outputs.set(o.out_vtk, to_string([&](std::ostream& s) {
+                  return PVF::IO::write_vtk(s, tm, a.roots, o.degree, a.singularities, a.face_arrays, constrained);
+                }, o.out_vtk));
   }
-  outputs.commit();
-  times["write"] = clock.lap();
+  if(!o.out_mesh.empty())
+  {
+    std::ostringstream s;
+    if(!CGAL::IO::write_OFF(s, tm, CGAL::parameters::stream_precision(17)))
+      throw Failure("writing " + o.out_mesh + ": cannot write the mesh");
+    outputs.set(o.out_mesh, s.str());
+  }
+  outputs.publish(o.default_outputs);
+  clock.lap("write");
+}
 
-  // Summary.
+// ---------------------------------------------------------------------------
+// Stage 8: the summary.
+// ---------------------------------------------------------------------------
+void print_summary(const Options& o, const Input_mesh& input, const Constraint_set& constraints, const Field& field,
+                   const Analysis& a, const Output_files& outputs, const Stopwatch& clock)
+{
+  const Mesh& tm = input.tm;
+  const PVF::IO::Mesh_repair_report& r = input.report;
   int sum = 0, positive = 0, negative = 0;
-  for(const auto& s : singularities)
+  for(const auto& s : a.singularities)
   {
     sum += s.index_numerator;
     (s.index_numerator > 0 ? positive : negative) += 1;
   }
-  std::size_t border_edges = 0;
+  std::size_t border_edges = 0, used_vertices = 0;
   for(auto e : edges(tm))
     border_edges += CGAL::is_border(e, tm);
-  const int chi = int(num_vertices(tm)) - int(num_edges(tm)) + int(num_faces(tm));
+  for(Vertex v : vertices(tm))
+    used_vertices += (halfedge(v, tm) == Mesh::null_halfedge()) ? 0 : 1;
+  // Isolated vertices (kept with --no-repair) are not part of the surface.
+  const int chi = int(used_vertices) - int(num_edges(tm)) + int(num_faces(tm));
   std::cout << std::setprecision(6);
-  std::cout << "mesh            " << o.mesh << ": " << num_faces(tm) << " faces, " << num_vertices(tm) << " vertices, "
-            << designer.connection().number_of_components() << " component(s), "
-            << (border_edges ? "with boundary" : "closed") << ", Euler characteristic " << chi << "\n";
+  std::cout << "mesh            " << o.mesh << ": " << num_faces(tm) << " faces, " << used_vertices << " vertices, "
+            << field.components << " component(s), " << (border_edges ? "with boundary" : "closed")
+            << ", Euler characteristic " << chi << "\n";
+  if(r.changed(o.repair))
+  {
+    std::cout << "repair          " << r.file_faces << " faces in the file ->";
+    const std::pair<std::size_t, const char*> items[] = {
+      { r.triangulated_faces, "polygons triangulated" }, { r.merged_points, "duplicate points merged" },
+      { r.duplicate_faces, "duplicate faces removed" }, { r.degenerate_polygons, "faces with a repeated vertex fixed or removed" },
+      { r.degenerate_faces, "zero-area triangles repaired" }, { r.reoriented_faces, "faces reoriented" },
+      { r.split_vertices, "vertices split (non-manifold)" }, { r.isolated_vertices, "isolated vertices removed" } };
+    const char* separator = " ";
+    for(const auto& item : items)
+      if(item.first)
+      {
+        std::cout << separator << item.first << " " << item.second;
+        separator = ", ";
+      }
+    std::cout << "; the outputs refer to the repaired mesh" << (o.out_mesh.empty() ? " (write it with --out-mesh)" : "") << "\n";
+  }
+  else if(r.isolated_vertices)
+    std::cout << "note            " << r.isolated_vertices << " isolated vertices are ignored\n";
   std::cout << "field           degree " << o.degree << (o.sign_symmetric ? ", sign-symmetric" : "") << ", "
-            << statistics.number_of_degrees_solved << " coefficient degree(s) solved\n";
-  std::cout << "constraints     " << constraints.size() << " faces (" << full << " full, " << partial << " partial"
-            << (sharp ? ", " + std::to_string(sharp) + " from sharp edges" : std::string())
-            << (from_curvature ? ", " + std::to_string(from_curvature) + " from curvature" : std::string()) << "), "
-            << (o.soft_weight > 0 ? "soft, weight " + std::to_string(o.soft_weight) : std::string("hard")) << "\n";
-  std::cout << "energy          " << energy << " (smoothness, Eq. 6)";
-  if(o.frame_field() && (o.angle_bound_degrees > 0 || o.conjugate))
-    std::cout << "; smooth field before optimisation " << smooth_energy;
-  std::cout << "\n" << frame_report.str();
-  std::cout << "singularities   " << singularities.size() << " (" << positive << " positive, " << negative
+            << field.statistics.number_of_degrees_solved << " coefficient degree(s) solved\n";
+  std::cout << "constraints     " << constraints.list.size() << " faces (" << field.full << " full, " << field.partial
+            << " partial" << (constraints.sharp ? ", " + std::to_string(constraints.sharp) + " from sharp edges" : std::string())
+            << (constraints.from_curvature ? ", " + std::to_string(constraints.from_curvature) + " from curvature" : std::string())
+            << "), ";
+  if(o.soft_weight > 0)
+    std::cout << "soft, weight " << o.soft_weight << "\n";
+  else
+    std::cout << "hard\n";
+  if(!constraints.note.empty())
+    std::cout << "note            " << constraints.note << "\n";
+  std::cout << "energy          " << a.energy << " (smoothness, Eq. 6)";
+  if(o.angle_bound_degrees > 0 || o.conjugate)
+    std::cout << "; smooth field before optimisation " << field.smooth_energy;
+  std::cout << "\n" << field.frame_report;
+  std::cout << "singularities   " << a.singularities.size() << " (" << positive << " positive, " << negative
             << " negative), sum of indices " << sum << "/" << o.degree;
   if(!border_edges)
     std::cout << " (Poincare-Hopf: N * chi = " << int(o.degree) * chi << ")";
   std::cout << "\n";
-  if(!undefined.empty())
-    std::cout << "undefined index " << undefined.size() << " vertices next to faces with a zero constant coefficient\n";
+  if(!a.undefined.empty())
+    std::cout << "undefined index " << a.undefined.size() << " vertices next to faces with a zero constant coefficient\n";
+  if(!a.note.empty())
+    std::cout << "note            " << a.note << "\n";
   std::cout << "time (s)       ";
-  for(const char* stage : { "load mesh", "frames and connection", "curvature", "constraints", "assembly", "factorization",
-                            "solve", "frame field", "roots", "singularities", "write" })
-    if(times.count(stage))
-    std::cout << " " << stage << " " << std::fixed << std::setprecision(3) << times[stage] << ";";
-  std::cout << "\n";
-  for(const std::string* out : { &o.out_field, &o.out_singularities, &o.out_vtk })
-    if(!out->empty())
-      std::cout << "wrote           " << *out << "\n";
+  for(const char* stage : { "load mesh", "constraints", "curvature", "frames and connection", "design", "frame field",
+                            "roots", "singularities", "diagnostics", "write" })
+    if(clock.times.count(stage))
+      std::cout << " " << stage << " " << std::fixed << std::setprecision(3) << clock.times.at(stage) << ";";
+  std::cout << " (design: assembly " << field.statistics.assembly << ", factorization " << field.statistics.factorization
+            << ", solve " << field.statistics.solve << ")\n";
+  for(const std::string& out : outputs.destinations())
+    std::cout << "wrote           " << out << "\n";
+}
+
+int run(const Options& o)
+{
+  Stopwatch clock;
+  Output_files outputs(o);
+  Input_mesh input = load_mesh(o);
+  clock.lap("load mesh");
+  Curvature curvature;
+  const Constraint_set constraints = gather_constraints(o, input, curvature, clock);
+  const Field field = design_field(o, input.tm, constraints, curvature, clock);
+  const Analysis analysis = analyse_field(o, input.tm, field, curvature, clock);
+  write_outputs(o, input.tm, constraints, analysis, outputs, clock);
+  print_summary(o, input, constraints, field, analysis, outputs, clock);
   return EXIT_SUCCESS;
 }
 
@@ -591,8 +975,7 @@ int main(int argc, char** argv)
 {
   try
   {
-    const Options options = parse(argc, argv);
-    return run(options);
+    return run(parse_options(argc, argv));
   }
   catch(const Failure& failure)
   {

@@ -43,20 +43,30 @@ set(constraints "${WORK_DIR}/constraints.txt")
 set(expect_success FALSE)
 if(CASE STREQUAL "missing_mesh")
   set(args --mesh "${WORK_DIR}/no_such_mesh.off")
-  set(reason "open|exist|no such|not found")
+  set(reason "does not exist")
 elseif(CASE STREQUAL "malformed_mesh")
   # The header announces 4 vertices and 4 faces; the file stops in the vertices.
   file(WRITE "${WORK_DIR}/broken.off" "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1\n")
   set(args --mesh "${WORK_DIR}/broken.off")
-  set(reason "read|malformed|invalid|parse")
+  set(reason "line 5: vertex 2 has fewer than 3 coordinates")
 elseif(CASE STREQUAL "non_triangle_mesh")
   # A closed, valid cube made of quads.
   file(WRITE "${WORK_DIR}/cube.off"
        "OFF\n8 6 0\n"
        "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
        "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
-  set(args --mesh "${WORK_DIR}/cube.off")
-  set(reason "triangle")
+  set(args --mesh "${WORK_DIR}/cube.off" --no-repair)
+  set(reason "face 0 \\(line 11\\) has 4 vertices: the mesh is not a triangle mesh")
+elseif(CASE STREQUAL "quad_mesh_repaired")
+  # The same cube without --no-repair: triangulated, designed on, and reported.
+  file(WRITE "${WORK_DIR}/cube.off"
+       "OFF\n8 6 0\n"
+       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+       "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
+  file(WRITE "${constraints}" "0 1 0 0 0 1 0\n")
+  set(args --mesh "${WORK_DIR}/cube.off" --degree 4 --sign-symmetric --constraints "${constraints}")
+  set(expect_success TRUE)
+  set(expect_stdout "repair          6 faces in the file -> 6 polygons triangulated")
 elseif(CASE STREQUAL "degree_zero")
   set(args --mesh "${bumpy}" --degree 0)
   set(reason "degree")
@@ -113,6 +123,12 @@ message(STATUS "exit: ${rc}")
 if(expect_success)
   if(NOT rc STREQUAL "0")
     message(FATAL_ERROR "expected exit code 0, got '${rc}'\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+  if(DEFINED expect_stdout)
+    string(FIND "${out}" "${expect_stdout}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "stdout does not say '${expect_stdout}'\nstdout:\n${out}")
+    endif()
   endif()
   if(CASE STREQUAL "default_run")
     set(outputs "")

@@ -31,14 +31,19 @@ enum class Error_code
   ZERO_CONSTRAINT_VECTOR,        ///< a constraint vector is zero, or vanishes once projected onto its face plane
   NON_FINITE_VALUE,              ///< a value (coordinate, weight, parameter) is NaN or infinite
   TOO_MANY_CONSTRAINT_VECTORS,   ///< a constraint gives more than `N` vectors (more than `N/2` with sign symmetry)
-  INVALID_WEIGHT,                ///< a soft-constraint weight is not strictly positive
+  INVALID_WEIGHT,                ///< a soft-constraint weight is neither infinite (hard) nor in `[1e-8, 1e8]`
   INCONSISTENT_DEGREE,           ///< a file or a field holds a degree other than the one asked for
   CANNOT_OPEN_FILE,              ///< a file cannot be opened for reading or writing
   MALFORMED_FILE,                ///< a file does not follow its format
   SOLVER_FAILURE,                ///< the sparse linear solver could not factor or solve the system
   INVALID_PARAMETER,             ///< a numerical parameter is out of its documented range
   NOT_A_FRAME_FIELD,             ///< a frame-field algorithm was called with `N != 4` or without sign symmetry
-  CURVATURE_ESTIMATION_FAILED    ///< the principal curvatures of a face could not be estimated
+  CURVATURE_ESTIMATION_FAILED,   ///< the principal curvatures of a face could not be estimated
+  FILE_TOO_LARGE,                ///< an input is larger than the size limit of its reader
+  UNSUPPORTED_FORMAT,            ///< a file's format (its extension or header) is not one that the reader knows
+  DUPLICATE_FACE,                ///< two faces of a mesh file have the same vertices
+  NON_MANIFOLD_MESH,             ///< a mesh has an edge shared by more than two faces, a vertex whose faces do not form a fan, or faces that cannot be oriented consistently
+  VALUE_OUT_OF_RANGE             ///< a value is finite but too large or too small for the computation: a constraint vector of length `L` needs `1e-100 <= L^N <= 1e100`
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -59,7 +64,7 @@ inline const char* get_error_message(Error_code code)
     case Error_code::ZERO_CONSTRAINT_VECTOR: return "a constraint vector is zero or normal to its face";
     case Error_code::NON_FINITE_VALUE: return "a value is NaN or infinite";
     case Error_code::TOO_MANY_CONSTRAINT_VECTORS: return "a constraint gives more vectors than the degree allows";
-    case Error_code::INVALID_WEIGHT: return "a soft-constraint weight is not strictly positive";
+    case Error_code::INVALID_WEIGHT: return "a soft-constraint weight is not in [1e-8, 1e8] (or infinite, for a hard constraint)";
     case Error_code::INCONSISTENT_DEGREE: return "the degree in the data differs from the degree asked for";
     case Error_code::CANNOT_OPEN_FILE: return "a file cannot be opened";
     case Error_code::MALFORMED_FILE: return "a file is malformed";
@@ -67,6 +72,11 @@ inline const char* get_error_message(Error_code code)
     case Error_code::INVALID_PARAMETER: return "a parameter is out of its valid range";
     case Error_code::NOT_A_FRAME_FIELD: return "the algorithm needs a sign-symmetric field of degree 4 (a frame field)";
     case Error_code::CURVATURE_ESTIMATION_FAILED: return "the principal curvatures could not be estimated";
+    case Error_code::FILE_TOO_LARGE: return "a file is larger than the size limit";
+    case Error_code::UNSUPPORTED_FORMAT: return "the file format is not supported";
+    case Error_code::DUPLICATE_FACE: return "the mesh has two faces with the same vertices";
+    case Error_code::NON_MANIFOLD_MESH: return "the mesh is not a manifold surface (an edge with more than two faces, a pinched vertex, or inconsistent orientations)";
+    case Error_code::VALUE_OUT_OF_RANGE: return "a constraint vector is too long or too short for the degree N (its length L needs 1e-100 <= L^N <= 1e100)";
   }
   return "unknown error";
 }

@@ -130,7 +130,7 @@ public:
   /// returns the unit direction, in the frame of `face(h)`, of the edge from `source(h)` to `target(h)`.
   std::complex<double> edge_direction(halfedge_descriptor h) const
   {
-    const std::array<double, 3> d = internal::difference(point(target(h, m_tm)), point(source(h, m_tm)));
+    const std::array<double, 3> d = internal::scaled_difference(point(target(h, m_tm)), point(source(h, m_tm)));
     const std::complex<double> e = frame(index(internal::face_of(h, m_tm))).to_complex(d[0], d[1], d[2]);
     return e / std::abs(e);
   }

@@ -40,9 +40,12 @@ double corner_angle(const Connection& connection, typename Connection::halfedge_
   using boost::get;
   const auto& tm = connection.mesh();
   const auto vpm = connection.vertex_point_map();
-  const std::array<double, 3> v = to_array(get(vpm, target(h, tm)));
-  const std::array<double, 3> a = difference(to_array(get(vpm, source(h, tm))), v);
-  const std::array<double, 3> b = difference(to_array(get(vpm, target(next(h, tm), tm))), v);
+  std::array<double, 3> v = to_array(get(vpm, target(h, tm)));
+  std::array<double, 3> p = to_array(get(vpm, source(h, tm)));
+  std::array<double, 3> q = to_array(get(vpm, target(next(h, tm), tm)));
+  scale_to_unit({ &v, &p, &q });  // the angle does not depend on the scale
+  const std::array<double, 3> a = difference(p, v);
+  const std::array<double, 3> b = difference(q, v);
   const std::array<double, 3> n = cross(a, b);
   return std::atan2(std::sqrt(dot(n, n)), dot(a, b));
 }

@@ -280,9 +280,21 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
     vertex_list.push_back(v);
   }
   const std::size_t nv = vertex_list.size();
+  // The points scaled by one power of two 2^-e, so that the largest coordinate
+  // is in [1, 2): the fits cannot overflow or underflow whatever the scale of
+  // the mesh; curvatures, which scale like 1/length, are scaled back by 2^-e.
   std::vector<std::array<double, 3> > points(nv);
+  double largest = 0;
   for(std::size_t i = 0; i < nv; ++i)
+  {
     points[i] = internal::to_array(get(vpm, vertex_list[i]));
+    for(double x : points[i])
+      largest = (std::max)(largest, std::abs(x));
+  }
+  const int scale_exponent = (largest > 0 && std::isfinite(largest)) ? std::ilogb(largest) : 0;
+  for(auto& p : points)
+    for(double& x : p)
+      x = std::ldexp(x, -scale_exponent);
 
   std::vector<std::array<double, 3> > vertex_normals(nv, std::array<double, 3>{ 0., 0., 0. });
   std::vector<double> incident_area(nv, 0.);
@@ -386,8 +398,8 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
     fit.normal = { n.x(), n.y(), n.z() };
     fit.d_max = { d_max.x(), d_max.y(), d_max.z() };
     fit.d_min = { d_min.x(), d_min.y(), d_min.z() };
-    fit.k_max = monge.principal_curvatures(0);
-    fit.k_min = monge.principal_curvatures(1);
+    fit.k_max = std::ldexp(monge.principal_curvatures(0), -scale_exponent);
+    fit.k_min = std::ldexp(monge.principal_curvatures(1), -scale_exponent);
     if(!internal::curvature_all_finite(fit.normal) || !internal::curvature_all_finite(fit.d_max)
        || !internal::curvature_all_finite(fit.d_min) || !std::isfinite(fit.k_max) || !std::isfinite(fit.k_min))
       return Error_code::CURVATURE_ESTIMATION_FAILED;

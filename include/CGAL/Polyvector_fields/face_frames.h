@@ -18,7 +18,9 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
+#include <initializer_list>
 #include <cmath>
 #include <complex>
 
@@ -84,21 +86,51 @@ std::array<double, 3> to_array(const Point& p)
   return { CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) };
 }
 
+// The points scaled by one power of two, chosen so that their largest
+// coordinate is in [1, 2): differences and products of the scaled points can
+// neither overflow nor underflow, and every quantity that does not depend on
+// the scale (a direction, an angle, a frame) comes out bit-identical to the
+// unscaled computation whenever that one does not overflow or underflow.
+// Returns the exponent e of the scale 2^-e (0 when the points are all zero).
+inline int scale_to_unit(std::initializer_list<std::array<double, 3>*> points)
+{
+  double m = 0;
+  for(const auto* p : points)
+    for(double x : *p)
+      m = (std::max)(m, std::abs(x));
+  if(!(m > 0) || !std::isfinite(m))
+    return 0;
+  const int e = std::ilogb(m);
+  for(auto* p : points)
+    for(double& x : *p)
+      x = std::ldexp(x, -e);
+  return e;
+}
+
+// The direction of b - a, scaled by a power of two (see scale_to_unit()).
+inline std::array<double, 3> scaled_difference(std::array<double, 3> b, std::array<double, 3> a)
+{
+  scale_to_unit({ &a, &b });
+  return difference(b, a);
+}
+
 // Relative area below which a triangle is degenerate: |(p1-p0) x (p2-p0)| is
 // compared with the square of the longest edge.
 constexpr double degenerate_face_tolerance = 1e-12;
 
 // Builds the frame of the triangle p0 p1 p2 (see `Face_frame`). Returns
 // DEGENERATE_FACE for a non-finite coordinate or a (numerically) zero area.
-inline Error_code triangle_frame(const std::array<double, 3>& p0,
-                                 const std::array<double, 3>& p1,
-                                 const std::array<double, 3>& p2,
+// Safe over the whole range of double: the points are scaled first.
+inline Error_code triangle_frame(std::array<double, 3> p0,
+                                 std::array<double, 3> p1,
+                                 std::array<double, 3> p2,
                                  Face_frame& frame)
 {
   for(const auto* p : { &p0, &p1, &p2 })
     for(double x : *p)
       if(!std::isfinite(x))
         return Error_code::DEGENERATE_FACE;
+  scale_to_unit({ &p0, &p1, &p2 });  // the frame does not depend on the scale
 
   const std::array<double, 3> a = difference(p1, p0), b = difference(p2, p0), c = difference(p2, p1);
   const std::array<double, 3> n = cross(a, b);

@@ -46,15 +46,106 @@ using Constraint_list =
   std::vector<Face_constraint<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                               typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Vector_3> >;
 
-// Maps the status of a coordinate token to an error code.
-inline Error_code coordinate_error(Token_status status)
+// Reads the number `token` of a coordinate, or says why it is not one
+// (`context` comes before the line number in the message).
+inline Error_code read_coordinate(std::string_view token, double& value, const Text_reader& reader,
+                                  const Diagnostic& diagnostic, const std::string& context = std::string())
 {
-  switch(status)
+  switch(parse_double(token, value))
   {
     case Token_status::OK: return Error_code::SUCCESS;
-    case Token_status::NON_FINITE: return Error_code::NON_FINITE_VALUE;
-    default: return Error_code::MALFORMED_FILE;
+    case Token_status::NON_FINITE:
+      return diagnostic.fail(Error_code::NON_FINITE_VALUE, context + "line " + std::to_string(reader.line_number()) +
+                                                             ": " + quoted(token) + " is not a finite number");
+    default:
+      return diagnostic.fail(Error_code::MALFORMED_FILE, context + "line " + std::to_string(reader.line_number()) +
+                                                           ": " + quoted(token) + " is not a number");
   }
+}
+
+// Reads a face id `token` in 0..F-1, or says why it is not one.
+inline Error_code read_face_id(std::string_view token, std::size_t F, std::size_t& id, const Text_reader& reader,
+                               const Diagnostic& diagnostic)
+{
+  long long value = 0;
+  const Token_status status = parse_integer(token, value);
+  if(status == Token_status::MALFORMED)
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "face id " + quoted(token) + " is not an integer");
+  if(status == Token_status::OUT_OF_RANGE || value < 0 || static_cast<unsigned long long>(value) >= F)
+    return diagnostic.fail_at(reader, Error_code::INVALID_FACE,
+                              "face id " + quoted(token) + " is not in 0.." + std::to_string(F == 0 ? 0 : F - 1) +
+                              " (the mesh has " + std::to_string(F) + " faces)");
+  id = std::size_t(value);
+  return Error_code::SUCCESS;
+}
+
+// Reads constraints on face ids 0..F-1; `construct` makes a vector from x, y, z.
+template <typename Vector_3, typename ConstructVector, typename NamedParameters>
+Error_code read_id_constraints_from_text(std::string_view text, std::size_t F, ConstructVector construct,
+                                         std::vector<Face_constraint<std::size_t, Vector_3> >& out,
+                                         const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Diagnostic diagnostic = internal::diagnostic(np);
+  // With an expected degree, a line may not hold more than N vectors: it is
+  // refused at the first number too many.
+  const std::size_t N = choose_parameter(get_parameter(np, Polyvector_fields::internal_np::expected_degree), std::size_t(0));
+  std::vector<bool> constrained(F, false);
+  std::vector<Face_constraint<std::size_t, Vector_3> > result;
+
+  Text_reader reader(text, '#');
+  std::string_view token;
+  while(reader.next_line())
+  {
+    reader.next_token(token);
+    std::size_t id = 0;
+    Error_code code = read_face_id(token, F, id, reader, diagnostic);
+    if(code != Error_code::SUCCESS)
+      return code;
+    if(constrained[id])
+      return diagnostic.fail_at(reader, Error_code::DUPLICATE_CONSTRAINT,
+                                "face " + std::to_string(id) + " is constrained a second time");
+    constrained[id] = true;
+
+    Face_constraint<std::size_t, Vector_3> constraint;
+    constraint.face = id;
+    double xyz[3];
+    std::size_t count = 0;
+    while(reader.next_token(token))
+    {
+      if(N != 0 && count == 3 * N)
+        return diagnostic.fail_at(reader, Error_code::TOO_MANY_CONSTRAINT_VECTORS,
+                                  "face " + std::to_string(id) + " has more than " + std::to_string(N) +
+                                    " vectors (the degree is " + std::to_string(N) + ")");
+      code = read_coordinate(token, xyz[count % 3], reader, diagnostic);
+      if(code != Error_code::SUCCESS)
+        return code;
+      if(++count % 3 == 0)
+        constraint.vectors.push_back(construct(xyz[0], xyz[1], xyz[2]));
+    }
+    if(count % 3 != 0)
+      return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE,
+                                std::to_string(count) + " numbers after the face id: not a multiple of 3 (x y z per vector)");
+    if(count == 0)
+      return diagnostic.fail_at(reader, Error_code::EMPTY_CONSTRAINT, "face " + std::to_string(id) + " has no vector");
+    result.push_back(std::move(constraint));
+  }
+  out = std::move(result);
+  return Error_code::SUCCESS;
+}
+
+// The constraints on ids, on the faces of `tm` (id i: the i-th face of faces(tm)).
+template <typename TriangleMesh, typename Vector_3>
+std::vector<Face_constraint<typename boost::graph_traits<TriangleMesh>::face_descriptor, Vector_3> >
+constraints_on_faces(const TriangleMesh& tm, std::vector<Face_constraint<std::size_t, Vector_3> >& by_id)
+{
+  const auto faces = face_list(tm);
+  std::vector<Face_constraint<typename boost::graph_traits<TriangleMesh>::face_descriptor, Vector_3> > result;
+  result.reserve(by_id.size());
+  for(auto& c : by_id)
+    result.push_back({ faces[c.face], std::move(c.vectors), c.weight });
+  return result;
 }
 
 template <typename TriangleMesh, typename NamedParameters>
@@ -62,54 +153,22 @@ Error_code read_constraints_from_text(std::string_view text, const TriangleMesh&
                                       Constraint_list<TriangleMesh, NamedParameters>& out,
                                       const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
-  typedef typename Constraint_list<TriangleMesh, NamedParameters>::value_type Constraint;
-
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const auto construct_vector = gt.construct_vector_3_object();
-  const auto faces = face_list(tm);
-  std::vector<bool> constrained(faces.size(), false);
-  Constraint_list<TriangleMesh, NamedParameters> result;
-
-  Line_reader lines(text);
-  std::vector<std::string_view> tokens;
-  while(next_nonblank_line(lines, tokens, '#'))
-  {
-    long long id = 0;
-    const Token_status id_status = parse_integer(tokens[0], id);
-    if(id_status == Token_status::MALFORMED)
-      return Error_code::MALFORMED_FILE;
-    if(id_status == Token_status::OUT_OF_RANGE || id < 0 ||
-       static_cast<unsigned long long>(id) >= faces.size())
-      return Error_code::INVALID_FACE;
-
-    const std::size_t number_count = tokens.size() - 1;
-    std::vector<double> numbers(number_count);
-    for(std::size_t i = 0; i < number_count; ++i)
-    {
-      const Error_code code = coordinate_error(parse_double(tokens[i + 1], numbers[i]));
-      if(code != Error_code::SUCCESS)
-        return code;
-    }
-    if(number_count % 3 != 0)
-      return Error_code::MALFORMED_FILE;
-    if(number_count == 0)
-      return Error_code::EMPTY_CONSTRAINT;
-    if(constrained[std::size_t(id)])
-      return Error_code::DUPLICATE_CONSTRAINT;
-    constrained[std::size_t(id)] = true;
-
-    Constraint constraint;
-    constraint.face = faces[std::size_t(id)];
-    for(std::size_t i = 0; i < number_count; i += 3)
-      constraint.vectors.push_back(construct_vector(numbers[i], numbers[i + 1], numbers[i + 2]));
-    result.push_back(std::move(constraint));
-  }
-  out = std::move(result);
-  return Error_code::SUCCESS;
+  const Geom_traits gt = CGAL::parameters::choose_parameter<Geom_traits>(
+    CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits));
+  std::vector<Face_constraint<std::size_t, typename Geom_traits::Vector_3> > by_id;
+  const Error_code code = read_id_constraints_from_text(text, face_list(tm).size(), gt.construct_vector_3_object(), by_id, np);
+  if(code == Error_code::SUCCESS)
+    out = constraints_on_faces(tm, by_id);
+  return code;
 }
+
+// Constructs Vector_3(x, y, z).
+template <typename Vector_3>
+struct Construct_from_coordinates
+{
+  Vector_3 operator()(double x, double y, double z) const { return Vector_3(x, y, z); }
+};
 
 template <typename TriangleMesh, typename ConstraintRange>
 Error_code constraints_to_string(const TriangleMesh& tm, const ConstraintRange& constraints, std::string& out)
@@ -149,35 +208,103 @@ Error_code constraints_to_string(const TriangleMesh& tm, const ConstraintRange& 
 // Reads an ASCII libigl .dmat matrix: `cols rows`, then rows*cols numbers in
 // column-major order, nothing after. A binary .dmat (whose first line is
 // `0 0`, followed by the real header and raw bytes) gives MALFORMED_FILE.
-inline Error_code parse_dmat(std::string_view text, std::size_t& cols, std::size_t& rows,
-                             std::vector<double>& values)
+// `name` names the matrix in messages.
+inline Error_code parse_dmat(std::string_view text, const std::string& name, std::size_t& cols, std::size_t& rows,
+                             std::vector<double>& values, const Diagnostic& diagnostic)
 {
-  Token_reader tokens(text);
+  Text_reader reader(text);
   std::string_view token;
   std::size_t c = 0, r = 0;
-  if(!tokens.next(token) || parse_integer(token, c) != Token_status::OK ||
-     !tokens.next(token) || parse_integer(token, r) != Token_status::OK)
-    return Error_code::MALFORMED_FILE;
-  if(c != 0 && r > (std::numeric_limits<std::size_t>::max)() / c)
-    return Error_code::MALFORMED_FILE;
+  if(!reader.next_token_anywhere(token) || parse_integer(token, c) != Token_status::OK ||
+     !reader.next_token_anywhere(token) || parse_integer(token, r) != Token_status::OK)
+    return diagnostic.fail(Error_code::MALFORMED_FILE, name + ": the header is not two integers 'cols rows'");
+  // Each value takes at least two characters: a header announcing more is refused before any allocation.
+  if(c != 0 && r > (text.size() / 2 + 1) / c)
+    return diagnostic.fail(Error_code::MALFORMED_FILE, name + ": the header announces " + std::to_string(c) + " x " +
+                                                         std::to_string(r) + " values, more than the file can hold");
   const std::size_t count = c * r;
   std::vector<double> result;
-  result.reserve((std::min)(count, text.size() / 2 + 1));  // each value takes at least two characters
+  result.reserve(count);
   for(std::size_t i = 0; i < count; ++i)
   {
     double value = 0;
-    if(!tokens.next(token))
-      return Error_code::MALFORMED_FILE;  // short file
-    const Error_code code = coordinate_error(parse_double(token, value));
+    if(!reader.next_token_anywhere(token))
+      return diagnostic.fail(Error_code::MALFORMED_FILE, name + ": the file ends after " + std::to_string(i) + " of " +
+                                                           std::to_string(count) + " values");
+    const Error_code code = read_coordinate(token, value, reader, diagnostic, name + ", ");
     if(code != Error_code::SUCCESS)
       return code;
     result.push_back(value);
   }
-  if(tokens.next(token))
-    return Error_code::MALFORMED_FILE;  // trailing data, e.g. the body of a binary .dmat
+  if(reader.next_token_anywhere(token))
+    return diagnostic.fail(Error_code::MALFORMED_FILE, name + ", line " + std::to_string(reader.line_number()) +
+                                                         ": data after the " + std::to_string(count) + " announced values");
   cols = c;
   rows = r;
   values = std::move(result);
+  return Error_code::SUCCESS;
+}
+
+template <typename Vector_3, typename ConstructVector, typename NamedParameters>
+Error_code read_id_dmat_constraints_from_text(std::string_view b_text, std::string_view bc_text, std::size_t F,
+                                              ConstructVector construct,
+                                              std::vector<Face_constraint<std::size_t, Vector_3> >& out,
+                                              const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Diagnostic diagnostic = internal::diagnostic(np);
+
+  std::size_t b_cols = 0, b_rows = 0, bc_cols = 0, bc_rows = 0;
+  std::vector<double> b, bc;
+  Error_code code = parse_dmat(b_text, "b", b_cols, b_rows, b, diagnostic);
+  if(code == Error_code::NON_FINITE_VALUE)
+    return diagnostic.fail(Error_code::MALFORMED_FILE, "b: a face id is not finite");
+  if(code != Error_code::SUCCESS)
+    return code;
+  code = parse_dmat(bc_text, "bc", bc_cols, bc_rows, bc, diagnostic);
+  if(code != Error_code::SUCCESS)
+    return code;
+  if(b_cols != 1)
+    return diagnostic.fail(Error_code::MALFORMED_FILE, "b has " + std::to_string(b_cols) + " columns, not 1");
+  if(bc_rows != b_rows)
+    return diagnostic.fail(Error_code::MALFORMED_FILE, "b has " + std::to_string(b_rows) + " rows but bc has " +
+                                                         std::to_string(bc_rows));
+  if(bc_cols % 3 != 0)
+    return diagnostic.fail(Error_code::MALFORMED_FILE,
+                           "bc has " + std::to_string(bc_cols) + " columns, not a multiple of 3 (x y z per vector)");
+  if(b_rows > 0 && bc_cols == 0)
+    return diagnostic.fail(Error_code::EMPTY_CONSTRAINT, "bc has no column: the constraints have no vector");
+  const std::size_t N = choose_parameter(get_parameter(np, Polyvector_fields::internal_np::expected_degree), std::size_t(0));
+  if(N != 0 && bc_cols / 3 > N)
+    return diagnostic.fail(Error_code::TOO_MANY_CONSTRAINT_VECTORS, "bc has " + std::to_string(bc_cols / 3) +
+                                                                      " vectors per face, more than the degree " +
+                                                                      std::to_string(N));
+
+  std::vector<bool> constrained(F, false);
+  std::vector<Face_constraint<std::size_t, Vector_3> > result;
+  result.reserve(b_rows);
+  for(std::size_t row = 0; row < b_rows; ++row)
+  {
+    const double id = b[row];
+    const std::string where = "b, row " + std::to_string(row) + ": ";
+    if(id != std::floor(id))
+      return diagnostic.fail(Error_code::MALFORMED_FILE, where + "face id is not an integer");
+    if(id < 0 || !(id < double(F)))
+      return diagnostic.fail(Error_code::INVALID_FACE, where + "face id is not in 0.." + std::to_string(F == 0 ? 0 : F - 1));
+    const std::size_t f = std::size_t(id);
+    if(constrained[f])
+      return diagnostic.fail(Error_code::DUPLICATE_CONSTRAINT, where + "face " + std::to_string(f) + " is constrained a second time");
+    constrained[f] = true;
+
+    Face_constraint<std::size_t, Vector_3> constraint;
+    constraint.face = f;
+    for(std::size_t col = 0; col < bc_cols; col += 3)
+      constraint.vectors.push_back(construct(bc[col * bc_rows + row], bc[(col + 1) * bc_rows + row],
+                                             bc[(col + 2) * bc_rows + row]));
+    result.push_back(std::move(constraint));
+  }
+  out = std::move(result);
   return Error_code::SUCCESS;
 }
 
@@ -187,55 +314,15 @@ Error_code read_dmat_constraints_from_text(std::string_view b_text, std::string_
                                            Constraint_list<TriangleMesh, NamedParameters>& out,
                                            const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
-  typedef typename Constraint_list<TriangleMesh, NamedParameters>::value_type Constraint;
-
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const auto construct_vector = gt.construct_vector_3_object();
-
-  std::size_t b_cols = 0, b_rows = 0, bc_cols = 0, bc_rows = 0;
-  std::vector<double> b, bc;
-  Error_code code = parse_dmat(b_text, b_cols, b_rows, b);
-  if(code == Error_code::NON_FINITE_VALUE)
-    return Error_code::MALFORMED_FILE;  // a face id must be an integer
-  if(code != Error_code::SUCCESS)
-    return code;
-  code = parse_dmat(bc_text, bc_cols, bc_rows, bc);
-  if(code != Error_code::SUCCESS)
-    return code;
-  if(b_cols != 1 || bc_rows != b_rows || bc_cols % 3 != 0)
-    return Error_code::MALFORMED_FILE;
-  if(b_rows > 0 && bc_cols == 0)
-    return Error_code::EMPTY_CONSTRAINT;
-
-  const auto faces = face_list(tm);
-  std::vector<bool> constrained(faces.size(), false);
-  Constraint_list<TriangleMesh, NamedParameters> result;
-  result.reserve(b_rows);
-  for(std::size_t row = 0; row < b_rows; ++row)
-  {
-    const double id = b[row];
-    if(id != std::floor(id))
-      return Error_code::MALFORMED_FILE;
-    if(id < 0 || !(id < double(faces.size())))
-      return Error_code::INVALID_FACE;
-    const std::size_t f = std::size_t(id);
-    if(constrained[f])
-      return Error_code::DUPLICATE_CONSTRAINT;
-    constrained[f] = true;
-
-    Constraint constraint;
-    constraint.face = faces[f];
-    for(std::size_t col = 0; col < bc_cols; col += 3)
-      constraint.vectors.push_back(construct_vector(bc[col * bc_rows + row],
-                                                    bc[(col + 1) * bc_rows + row],
-                                                    bc[(col + 2) * bc_rows + row]));
-    result.push_back(std::move(constraint));
-  }
-  out = std::move(result);
-  return Error_code::SUCCESS;
+  const Geom_traits gt = CGAL::parameters::choose_parameter<Geom_traits>(
+    CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits));
+  std::vector<Face_constraint<std::size_t, typename Geom_traits::Vector_3> > by_id;
+  const Error_code code = read_id_dmat_constraints_from_text(b_text, bc_text, face_list(tm).size(),
+                                                             gt.construct_vector_3_object(), by_id, np);
+  if(code == Error_code::SUCCESS)
+    out = constraints_on_faces(tm, by_id);
+  return code;
 }
 
 } // namespace internal
@@ -276,12 +363,30 @@ Error_code read_dmat_constraints_from_text(std::string_view b_text, std::string_
 ///     \cgalParamType{a class model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{expected_degree}
+///     \cgalParamDescription{the degree `N` of the field: a face with more than `N` vectors is refused at its first
+///                           number too many (`Error_code::TOO_MANY_CONSTRAINT_VECTORS`); `0` accepts any count}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_file_size}
+///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{1 GiB}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{error_message}
+///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its place (line, row, face)}
+///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns
 /// - `Error_code::CANNOT_OPEN_FILE` if `is` is not readable;
-/// - `Error_code::MALFORMED_FILE` if a face id is not an integer, a number is
+/// - `Error_code::FILE_TOO_LARGE` if the input is larger than `maximum_file_size`;
+/// - `Error_code::MALFORMED_FILE` if the input holds a NUL byte, a face id is not an integer, a number is
 ///   not a decimal number, or the count of numbers on a line is not a multiple of 3;
+/// - `Error_code::TOO_MANY_CONSTRAINT_VECTORS` if a face has more than `expected_degree` vectors;
 /// - `Error_code::INVALID_FACE` if a face id is negative or not smaller than the number of faces;
 /// - `Error_code::NON_FINITE_VALUE` if a coordinate is NaN or infinite;
 /// - `Error_code::EMPTY_CONSTRAINT` if a line holds a face id and no vector;
@@ -295,9 +400,8 @@ Error_code read_constraints(std::istream& is, const TriangleMesh& tm,
                             const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  if(!internal::read_whole_stream(is, text))
-    return Error_code::CANNOT_OPEN_FILE;
-  return internal::read_constraints_from_text(text, tm, out, np);
+  const Error_code code = internal::read_text(is, text, np);
+  return code != Error_code::SUCCESS ? code : internal::read_constraints_from_text(text, tm, out, np);
 }
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -312,9 +416,8 @@ Error_code read_constraints(const std::string& filename, const TriangleMesh& tm,
                             const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  if(!internal::read_whole_file(filename, text))
-    return Error_code::CANNOT_OPEN_FILE;
-  return internal::read_constraints_from_text(text, tm, out, np);
+  const Error_code code = internal::read_text(filename, text, np);
+  return code != Error_code::SUCCESS ? code : internal::read_constraints_from_text(text, tm, out, np);
 }
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -411,15 +514,33 @@ Error_code write_constraints(const std::string& filename, const TriangleMesh& tm
 ///     \cgalParamType{a class model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{expected_degree}
+///     \cgalParamDescription{the degree `N` of the field: a face with more than `N` vectors is refused at its first
+///                           number too many (`Error_code::TOO_MANY_CONSTRAINT_VECTORS`); `0` accepts any count}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_file_size}
+///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{1 GiB}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{error_message}
+///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its place (line, row, face)}
+///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns
 /// - `Error_code::CANNOT_OPEN_FILE` if a stream is not readable;
-/// - `Error_code::MALFORMED_FILE` if a header is not two non-negative integers, a
+/// - `Error_code::FILE_TOO_LARGE` if an input is larger than `maximum_file_size`;
+/// - `Error_code::MALFORMED_FILE` if an input holds a NUL byte, a header is not two non-negative integers, a
 ///   file is short or has trailing data (as a binary `.dmat` has), a value is
 ///   not a decimal number, `b` has other than one column, a face id is not an
 ///   integer, the row counts differ, or the column count of `bc` is not a multiple of 3;
 /// - `Error_code::EMPTY_CONSTRAINT` if `b` has rows and `bc` has no column;
+/// - `Error_code::TOO_MANY_CONSTRAINT_VECTORS` if `bc` has more than `expected_degree` vectors per row;
 /// - `Error_code::INVALID_FACE` if a face id is negative or not smaller than the number of faces;
 /// - `Error_code::DUPLICATE_CONSTRAINT` if a face id appears twice;
 /// - `Error_code::NON_FINITE_VALUE` if a value of `bc` is NaN or infinite;
@@ -432,9 +553,10 @@ Error_code read_dmat_constraints(std::istream& b, std::istream& bc, const Triang
                                  const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string b_text, bc_text;
-  if(!internal::read_whole_stream(b, b_text) || !internal::read_whole_stream(bc, bc_text))
-    return Error_code::CANNOT_OPEN_FILE;
-  return internal::read_dmat_constraints_from_text(b_text, bc_text, tm, out, np);
+  Error_code code = internal::read_text(b, b_text, np, "b: ");
+  if(code == Error_code::SUCCESS)
+    code = internal::read_text(bc, bc_text, np, "bc: ");
+  return code != Error_code::SUCCESS ? code : internal::read_dmat_constraints_from_text(b_text, bc_text, tm, out, np);
 }
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -451,9 +573,58 @@ Error_code read_dmat_constraints(const std::string& b_filename, const std::strin
                                  const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string b_text, bc_text;
-  if(!internal::read_whole_file(b_filename, b_text) || !internal::read_whole_file(bc_filename, bc_text))
-    return Error_code::CANNOT_OPEN_FILE;
-  return internal::read_dmat_constraints_from_text(b_text, bc_text, tm, out, np);
+  Error_code code = internal::read_text(b_filename, b_text, np, "b: ");
+  if(code == Error_code::SUCCESS)
+    code = internal::read_text(bc_filename, bc_text, np, "bc: ");
+  return code != Error_code::SUCCESS ? code : internal::read_dmat_constraints_from_text(b_text, bc_text, tm, out, np);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// reads the constraint file `filename` as `read_constraints()` does, but on
+/// face ids `0 .. number_of_faces-1` rather than on the faces of a mesh: for a
+/// mesh that has been changed since the file was made (see
+/// `read_triangle_mesh()` and `Mesh_repair_report::source_face`).
+///
+/// \tparam Vector_3 a vector type constructible from three `double`
+///
+/// \returns the codes of `read_constraints()`.
+template <typename Vector_3, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code read_constraints_by_id(const std::string& filename, std::size_t number_of_faces,
+                                  std::vector<Face_constraint<std::size_t, Vector_3> >& out,
+                                  const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::string text;
+  const Error_code code = internal::read_text(filename, text, np);
+  return code != Error_code::SUCCESS
+           ? code
+           : internal::read_id_constraints_from_text(text, number_of_faces, internal::Construct_from_coordinates<Vector_3>(),
+                                                     out, np);
+}
+
+/// \ingroup PkgPolyvectorFieldsIO
+///
+/// reads the `.dmat` files `b_filename` and `bc_filename` as
+/// `read_dmat_constraints()` does, but on face ids `0 .. number_of_faces-1`
+/// (see `read_constraints_by_id()`).
+///
+/// \tparam Vector_3 a vector type constructible from three `double`
+///
+/// \returns the codes of `read_dmat_constraints()`.
+template <typename Vector_3, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code read_dmat_constraints_by_id(const std::string& b_filename, const std::string& bc_filename,
+                                       std::size_t number_of_faces,
+                                       std::vector<Face_constraint<std::size_t, Vector_3> >& out,
+                                       const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  std::string b_text, bc_text;
+  Error_code code = internal::read_text(b_filename, b_text, np, "b: ");
+  if(code == Error_code::SUCCESS)
+    code = internal::read_text(bc_filename, bc_text, np, "bc: ");
+  return code != Error_code::SUCCESS
+           ? code
+           : internal::read_id_dmat_constraints_from_text(b_text, bc_text, number_of_faces,
+                                                          internal::Construct_from_coordinates<Vector_3>(), out, np);
 }
 
 } // namespace IO

@@ -91,44 +91,52 @@ Error_code read_rawfield_from_text(std::string_view text, const TriangleMesh& tm
     choose_parameter(get_parameter(np, Polyvector_fields::internal_np::expected_degree), std::size_t(0));
   const auto construct_vector = gt.construct_vector_3_object();
 
-  Line_reader lines(text);
-  std::vector<std::string_view> tokens;
-  if(!next_nonblank_line(lines, tokens) || tokens.size() != 2)
-    return Error_code::MALFORMED_FILE;
+  const Diagnostic diagnostic = internal::diagnostic(np);
+  Text_reader reader(text);
+  std::string_view token;
   std::size_t N = 0, F = 0;
-  if(parse_integer(tokens[0], N) != Token_status::OK || parse_integer(tokens[1], F) != Token_status::OK)
-    return Error_code::MALFORMED_FILE;
+  if(!reader.next_line() || !reader.next_token(token) || parse_integer(token, N) != Token_status::OK ||
+     !reader.next_token(token) || parse_integer(token, F) != Token_status::OK || reader.line_has_more())
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the header is not two integers 'N F'");
   if(N == 0 || N > (std::numeric_limits<std::size_t>::max)() / 3)
-    return Error_code::MALFORMED_FILE;
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the degree N = " + std::to_string(N) + " is not valid");
   if(expected_N != 0 && N != expected_N)
-    return Error_code::INCONSISTENT_DEGREE;
+    return diagnostic.fail_at(reader, Error_code::INCONSISTENT_DEGREE, "the degree is " + std::to_string(N) +
+                                                                         ", not " + std::to_string(expected_N));
   const auto face_ids = face_list(tm);
   if(F != face_ids.size())
-    return Error_code::MALFORMED_FILE;
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the file has " + std::to_string(F) +
+                                                                    " faces, the mesh " + std::to_string(face_ids.size()));
 
   std::vector<std::vector<Vector_3> > roots(F);
   using boost::put;
   for(std::size_t f = 0; f < F; ++f)
   {
-    if(!next_nonblank_line(lines, tokens) || tokens.size() != 3 * N)
-      return Error_code::MALFORMED_FILE;
+    if(!reader.next_line())
+      return diagnostic.fail(Error_code::MALFORMED_FILE, "the file ends after " + std::to_string(f) + " of " +
+                                                           std::to_string(F) + " faces");
     roots[f].reserve(N);
-    for(std::size_t j = 0; j < N; ++j)
+    double xyz[3];
+    for(std::size_t k = 0; k < 3 * N; ++k)
     {
-      double xyz[3];
-      for(int c = 0; c < 3; ++c)
-      {
-        const Token_status status = parse_double(tokens[3 * j + c], xyz[c]);
-        if(status == Token_status::NON_FINITE)
-          return Error_code::NON_FINITE_VALUE;
-        if(status != Token_status::OK)
-          return Error_code::MALFORMED_FILE;
-      }
-      roots[f].push_back(construct_vector(xyz[0], xyz[1], xyz[2]));
+      if(!reader.next_token(token))
+        return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "face " + std::to_string(f) + " has " +
+                                                                        std::to_string(k) + " numbers, not 3N = " +
+                                                                        std::to_string(3 * N));
+      const Token_status status = parse_double(token, xyz[k % 3]);
+      if(status == Token_status::NON_FINITE)
+        return diagnostic.fail_at(reader, Error_code::NON_FINITE_VALUE, quoted(token) + " is not a finite number");
+      if(status != Token_status::OK)
+        return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, quoted(token) + " is not a number");
+      if(k % 3 == 2)
+        roots[f].push_back(construct_vector(xyz[0], xyz[1], xyz[2]));
     }
+    if(reader.line_has_more())
+      return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE,
+                                "face " + std::to_string(f) + " has more than 3N = " + std::to_string(3 * N) + " numbers");
   }
-  if(next_nonblank_line(lines, tokens))
-    return Error_code::MALFORMED_FILE;  // more lines than faces
+  if(reader.next_line())
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "data after the last face");
 
   for(std::size_t f = 0; f < F; ++f)
     put(root_map, face_ids[f], std::move(roots[f]));
@@ -247,11 +255,22 @@ Error_code write_rawfield(const std::string& filename, const TriangleMesh& tm, R
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{`0`: any degree is accepted}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_file_size}
+///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{1 GiB}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{error_message}
+///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its line}
+///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns
 /// - `Error_code::CANNOT_OPEN_FILE` if `is` is not readable;
-/// - `Error_code::MALFORMED_FILE` if the header is not two non-negative integers,
+/// - `Error_code::FILE_TOO_LARGE` if the input is larger than `maximum_file_size`;
+/// - `Error_code::MALFORMED_FILE` if the input holds a NUL byte, if the header is not two non-negative integers,
 ///   if `N == 0`, if `F` differs from the number of faces, if a line does not
 ///   hold exactly `3N` numbers, if a token is not a decimal number, or if
 ///   non-blank lines follow the last face;
@@ -266,9 +285,8 @@ Error_code read_rawfield(std::istream& is, const TriangleMesh& tm, RootMap root_
                          const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  if(!internal::read_whole_stream(is, text))
-    return Error_code::CANNOT_OPEN_FILE;
-  return internal::read_rawfield_from_text(text, tm, root_map, N, np);
+  const Error_code code = internal::read_text(is, text, np);
+  return code != Error_code::SUCCESS ? code : internal::read_rawfield_from_text(text, tm, root_map, N, np);
 }
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -282,9 +300,8 @@ Error_code read_rawfield(const std::string& filename, const TriangleMesh& tm, Ro
                          const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  if(!internal::read_whole_file(filename, text))
-    return Error_code::CANNOT_OPEN_FILE;
-  return internal::read_rawfield_from_text(text, tm, root_map, N, np);
+  const Error_code code = internal::read_text(filename, text, np);
+  return code != Error_code::SUCCESS ? code : internal::read_rawfield_from_text(text, tm, root_map, N, np);
 }
 
 } // namespace IO

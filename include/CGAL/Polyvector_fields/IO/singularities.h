@@ -97,37 +97,46 @@ Error_code read_singularities_from_text(
   const std::size_t expected_N =
     choose_parameter(get_parameter(np, Polyvector_fields::internal_np::expected_degree), std::size_t(0));
 
-  Line_reader lines(text);
-  std::vector<std::string_view> tokens;
-  if(!next_nonblank_line(lines, tokens) || tokens.size() != 2)
-    return Error_code::MALFORMED_FILE;
+  const Diagnostic diagnostic = internal::diagnostic(np);
+  Text_reader reader(text);
+  std::string_view token;
   std::size_t N = 0, count = 0;
-  if(parse_integer(tokens[0], N) != Token_status::OK || parse_integer(tokens[1], count) != Token_status::OK ||
-     N == 0)
-    return Error_code::MALFORMED_FILE;
+  if(!reader.next_line() || !reader.next_token(token) || parse_integer(token, N) != Token_status::OK ||
+     !reader.next_token(token) || parse_integer(token, count) != Token_status::OK || reader.line_has_more() || N == 0)
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the header is not two integers 'N count' with N >= 1");
   if(expected_N != 0 && N != expected_N)
-    return Error_code::INCONSISTENT_DEGREE;
+    return diagnostic.fail_at(reader, Error_code::INCONSISTENT_DEGREE, "the degree is " + std::to_string(N) +
+                                                                         ", not " + std::to_string(expected_N));
 
   const auto vertices = vertex_list(tm);
   if(count > vertices.size())
-    return Error_code::MALFORMED_FILE;  // some vertex would be listed twice
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, std::to_string(count) +
+                                                                    " singularities announced, more than the " +
+                                                                    std::to_string(vertices.size()) + " vertices");
   std::vector<bool> seen(vertices.size(), false);
   std::vector<Singularity<vertex_descriptor> > result;
   result.reserve(count);
   for(std::size_t i = 0; i < count; ++i)
   {
-    if(!next_nonblank_line(lines, tokens) || tokens.size() != 2)
-      return Error_code::MALFORMED_FILE;
+    if(!reader.next_line())
+      return diagnostic.fail(Error_code::MALFORMED_FILE, "the file ends after " + std::to_string(i) + " of " +
+                                                           std::to_string(count) + " singularities");
     std::size_t id = 0;
     int numerator = 0;
-    if(parse_integer(tokens[0], id) != Token_status::OK || id >= vertices.size() || seen[id] ||
-       parse_integer(tokens[1], numerator) != Token_status::OK || numerator == 0)
-      return Error_code::MALFORMED_FILE;
+    if(!reader.next_token(token) || parse_integer(token, id) != Token_status::OK || id >= vertices.size())
+      return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the vertex id " + quoted(token) +
+                                                                      " is not in 0.." +
+                                                                      std::to_string(vertices.size() - 1));
+    if(seen[id])
+      return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "vertex " + std::to_string(id) + " is listed twice");
+    if(!reader.next_token(token) || parse_integer(token, numerator) != Token_status::OK || numerator == 0 ||
+       reader.line_has_more())
+      return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "expected 'vertex numerator' with an integer numerator other than 0");
     seen[id] = true;
     result.push_back(Singularity<vertex_descriptor>{ vertices[id], numerator });
   }
-  if(next_nonblank_line(lines, tokens))
-    return Error_code::MALFORMED_FILE;  // more lines than announced
+  if(reader.next_line())
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "data after the announced singularities");
 
   out = std::move(result);
   N_out = N;
@@ -230,11 +239,22 @@ Error_code write_singularities(const std::string& filename, const TriangleMesh& 
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{`0`: any degree is accepted}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_file_size}
+///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{1 GiB}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{error_message}
+///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its line}
+///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns
 /// - `Error_code::CANNOT_OPEN_FILE` if `is` is not readable;
-/// - `Error_code::MALFORMED_FILE` if the header is not two non-negative integers
+/// - `Error_code::FILE_TOO_LARGE` if the input is larger than `maximum_file_size`;
+/// - `Error_code::MALFORMED_FILE` if the input holds a NUL byte, if the header is not two non-negative integers
 ///   or `N == 0`; if a line is not two integers; if a vertex id is out of range
 ///   or repeated (there is no dedicated code for a bad vertex id); if an index
 ///   numerator is zero or does not fit in an `int`; if there are fewer or more
@@ -250,8 +270,9 @@ Error_code read_singularities(
   const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  if(!internal::read_whole_stream(is, text))
-    return Error_code::CANNOT_OPEN_FILE;
+  const Error_code code = internal::read_text(is, text, np);
+  if(code != Error_code::SUCCESS)
+    return code;
   return internal::read_singularities_from_text(text, tm, N, out, np);
 }
 
@@ -268,8 +289,9 @@ Error_code read_singularities(
   const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  if(!internal::read_whole_file(filename, text))
-    return Error_code::CANNOT_OPEN_FILE;
+  const Error_code code = internal::read_text(filename, text, np);
+  if(code != Error_code::SUCCESS)
+    return code;
   return internal::read_singularities_from_text(text, tm, N, out, np);
 }
 

@@ -130,8 +130,7 @@ public:
   bool factor()
   {
     typename Factorization<SolverTraits>::Solver_scope scope;
-    classify();
-    return factor_new_pattern();
+    return classify() && factor_new_pattern();
   }
 
   // Refactors after a change of weights only (same pattern, same symbolic
@@ -290,7 +289,7 @@ private:
     }
   };
 
-  void classify()
+  bool classify()
   {
     const std::size_t F = m_connection.number_of_faces();
     const std::size_t C = m_connection.number_of_components();
@@ -316,7 +315,8 @@ private:
         if(s.is_hard())
         {
           m_kind[f] = PARTIAL;
-          m_partial_basis[f] = null_space_parametrisation(s);
+          if(!null_space_parametrisation(s, m_partial_basis[f]))
+            return false;
         }
       }
     }
@@ -358,6 +358,7 @@ private:
     m_partial_row_coefficients.resize(slots);
     m_partial_row_variables.resize(slots);
     m_unit = Complex(1);
+    return true;
   }
 
   struct Partial_basis
@@ -366,16 +367,31 @@ private:
     Eigen::MatrixXcd Z;   // orthonormal null-space basis, slots x r
   };
 
-  static Partial_basis null_space_parametrisation(const Face_specification& s)
+  // The null space of the rows of a partial constraint, and its minimum-norm
+  // particular solution. The rows are scaled to a largest entry of 1 first
+  // (the equations, hence the solution set, do not change), so that the SVD's
+  // rank threshold is relative to each row. Returns false if the SVD fails.
+  static bool null_space_parametrisation(const Face_specification& s, Partial_basis& basis)
   {
-    Eigen::JacobiSVD<Eigen::MatrixXcd> svd(s.rows, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    const double tolerance = 1e-12 * (svd.singularValues().size() ? svd.singularValues()[0] : 1.0);
-    svd.setThreshold(tolerance / (svd.singularValues().size() ? svd.singularValues()[0] : 1.0));
+    Eigen::MatrixXcd rows = s.rows;
+    Eigen::VectorXcd rhs = s.rhs;
+    for(Eigen::Index r = 0; r < rows.rows(); ++r)
+    {
+      const double largest = (std::max)(rows.row(r).cwiseAbs().maxCoeff(), std::abs(rhs[r]));
+      if(largest > 0)
+      {
+        rows.row(r) /= largest;
+        rhs[r] /= largest;
+      }
+    }
+    Eigen::JacobiSVD<Eigen::MatrixXcd> svd(rows, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    if(svd.info() != Eigen::Success)
+      return false;
+    svd.setThreshold(1e-12);
     const Eigen::Index rank = svd.rank();
-    Partial_basis basis;
-    basis.p = svd.solve(s.rhs);
-    basis.Z = svd.matrixV().rightCols(s.rows.cols() - rank);
-    return basis;
+    basis.p = svd.solve(rhs);
+    basis.Z = svd.matrixV().rightCols(rows.cols() - rank);
+    return basis.p.allFinite() && basis.Z.allFinite();
   }
 
   // The affine expression of c_{f,q} in the unknowns of block b.

@@ -17,6 +17,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -60,6 +61,28 @@ inline void clean_round_off(std::vector<Complex>& c, const std::vector<Complex>&
       c[m] = 0;
 }
 
+// The range of constraint vectors: a vector of length L gives coefficients
+// of magnitude up to about L^N (L^(N-m) binom(N, m) for c_m), which the
+// energies square. The package accepts 1e-100 <= L^N <= 1e100, so that every
+// coefficient and its squared modulus, times a soft weight, is a normal double.
+constexpr double constraint_magnitude_exponent = 100;
+
+// Whether the length L = length * 2^e has 1e-100 <= L^N <= 1e100.
+inline bool constraint_length_in_range(double length, int e, std::size_t N)
+{
+  const double log10_length = std::log10(length) + double(e) * 0.30102999566398119521;
+  return std::abs(double(N) * log10_length) <= constraint_magnitude_exponent;
+}
+
+// The range of soft-constraint weights, relative to the unit weights of the
+// smoothness terms. Above 1e8 = 1/sqrt(machine epsilon) the normal equations
+// lose every digit in the directions that a soft partial constraint leaves
+// free (its term has rank one per vector): such a weight is a hard constraint
+// in all but name, and should be given as one. Below 1e-8 a constraint only
+// matters where nothing else does; the bound keeps the range symmetric.
+constexpr double minimum_soft_weight = 1e-8;
+constexpr double maximum_soft_weight = 1e8;
+
 // Converts the world vectors of a constraint on the face with `frame` into a
 // specification. Each vector is projected onto the face plane and keeps its
 // length. `degrees` are the active degrees of the system (used for the rows of
@@ -76,7 +99,7 @@ Error_code make_face_specification(const Face_frame& frame,
     return Error_code::EMPTY_CONSTRAINT;
   if(std::isnan(weight))
     return Error_code::NON_FINITE_VALUE;
-  if(!(weight > 0))
+  if(!(weight > 0) || (!std::isinf(weight) && !(weight >= minimum_soft_weight && weight <= maximum_soft_weight)))
     return Error_code::INVALID_WEIGHT;
   const std::size_t n = sign_symmetric ? N / 2 : N;
   if(vectors.size() > n)
@@ -85,15 +108,21 @@ Error_code make_face_specification(const Face_frame& frame,
   std::vector<Complex> roots;
   for(const Vector_3& v : vectors)
   {
-    const double x = CGAL::to_double(v.x()), y = CGAL::to_double(v.y()), z = CGAL::to_double(v.z());
-    if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+    std::array<double, 3> w = { CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()) };
+    if(!std::isfinite(w[0]) || !std::isfinite(w[1]) || !std::isfinite(w[2]))
       return Error_code::NON_FINITE_VALUE;
-    const double length = std::sqrt(x * x + y * y + z * z);
-    const Complex u = frame.to_complex(x, y, z);
+    // Scaled by a power of two first, so that no square overflows or underflows;
+    // the root is the same, bit for bit, as without the scaling.
+    const int e = scale_to_unit({ &w });
+    const double length = std::sqrt(dot(w, w));
+    const Complex u = frame.to_complex(w[0], w[1], w[2]);
     const double projected = std::abs(u);
     if(!(length > 0) || !(projected > 1e-9 * length))
       return Error_code::ZERO_CONSTRAINT_VECTOR;
-    roots.push_back(u * (length / projected));
+    if(!constraint_length_in_range(length, e, N))
+      return Error_code::VALUE_OUT_OF_RANGE;
+    const Complex root = u * (length / projected);
+    roots.push_back(Complex(std::ldexp(root.real(), e), std::ldexp(root.imag(), e)));
   }
 
   Face_specification s;

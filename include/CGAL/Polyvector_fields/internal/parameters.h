@@ -25,6 +25,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cstddef>
+#include <string>
 #include <type_traits>
 
 #define CGAL_PVF_ADD_NAMED_PARAMETER(TAG_TYPE, TAG_VALUE, FUNCTION)                       \
@@ -57,6 +59,16 @@ CGAL_PVF_ADD_NAMED_PARAMETER(lambda_factor_t, lambda_factor, lambda_factor)
 CGAL_PVF_ADD_NAMED_PARAMETER(tolerance_t, tolerance, tolerance)
 CGAL_PVF_ADD_NAMED_PARAMETER(principal_curvature_map_t, principal_curvature_map, principal_curvature_map)
 
+// Input and output.
+/// `std::size_t`: the degree `N` that a reader expects in the file; a file of
+/// another degree gives `Error_code::INCONSISTENT_DEGREE`. The default `0`
+/// accepts any degree.
+CGAL_PVF_ADD_NAMED_PARAMETER(expected_degree_t, expected_degree, expected_degree)
+/// `std::size_t`: the largest input a reader accepts, in bytes.
+CGAL_PVF_ADD_NAMED_PARAMETER(maximum_file_size_t, maximum_file_size, maximum_file_size)
+/// `bool`: whether a mesh reader repairs what it can (see `IO::read_triangle_mesh()`).
+CGAL_PVF_ADD_NAMED_PARAMETER(repair_t, repair, repair)
+
 // Curvature estimation and curvature constraints.
 CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)
 CGAL_PVF_ADD_NAMED_PARAMETER(anisotropy_threshold_t, anisotropy_threshold, anisotropy_threshold)
@@ -64,7 +76,32 @@ CGAL_PVF_ADD_NAMED_PARAMETER(constrained_fraction_t, constrained_fraction, const
 
 namespace CGAL {
 namespace Polyvector_fields {
+namespace internal_np {
+enum error_message_t { error_message };
+} // namespace internal_np
+
+namespace IO {
+namespace internal {
+// The default of the named parameter `maximum_file_size`: 1 GiB.
+constexpr std::size_t default_maximum_file_size = std::size_t(1) << 30;
+} // namespace internal
+} // namespace IO
+
 namespace parameters {
+
+/// a string that receives, when a reader fails, the reason and where it is in the input.
+inline CGAL::Named_function_parameters<std::string*, internal_np::error_message_t> error_message(std::string& message)
+{
+  return CGAL::Named_function_parameters<std::string*, internal_np::error_message_t>(&message);
+}
+
+template <typename T, typename Tag, typename Base>
+CGAL::Named_function_parameters<std::string*, internal_np::error_message_t, CGAL::Named_function_parameters<T, Tag, Base> >
+error_message(std::string& message, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return CGAL::Named_function_parameters<std::string*, internal_np::error_message_t,
+                                         CGAL::Named_function_parameters<T, Tag, Base> >(&message, np);
+}
 
 // CGAL's own parameters that this package reads, so that a user can name every
 // parameter through CGAL::Polyvector_fields::parameters.

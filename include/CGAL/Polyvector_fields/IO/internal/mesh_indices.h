@@ -8,8 +8,7 @@
 #ifndef CGAL_POLYVECTOR_FIELDS_IO_INTERNAL_MESH_INDICES_H
 #define CGAL_POLYVECTOR_FIELDS_IO_INTERNAL_MESH_INDICES_H
 
-// Face and vertex ids of the file formats, and the named parameter
-// `expected_degree` shared by the readers.
+// Face and vertex ids of the file formats.
 //
 // Ids are 0-based, in the order of faces(tm) / vertices(tm). The writers look
 // up descriptors given by the caller, which may be stale or null, so the
@@ -27,10 +26,6 @@
 
 #include <boost/functional/hash.hpp>
 
-/// `std::size_t`: the degree `N` that a reader expects in the file; a file of
-/// another degree gives `Error_code::INCONSISTENT_DEGREE`. The default `0`
-/// accepts any degree.
-CGAL_PVF_ADD_NAMED_PARAMETER(expected_degree_t, expected_degree, expected_degree)
 
 namespace CGAL {
 namespace Polyvector_fields {

@@ -10,16 +10,24 @@
 
 // Locale-independent reading and writing of the text formats of this package.
 //
-// Files are read whole into a string, cut into lines at '\n', and lines into
-// tokens at blanks (space, tab, '\r', '\v', '\f'). Every token is parsed by
-// hand or with <charconv>, so neither the global C locale nor the locale
-// imbued in a user's stream changes what is read or written, and arbitrary
-// bytes (a binary file given by mistake) only ever give MALFORMED.
+// Files are read whole into a string, up to a size limit (named parameter
+// `maximum_file_size`; a NUL byte in a text format is refused at once), then
+// cut lazily into lines at '\n' and lines into tokens at blanks (space, tab,
+// '\r', '\v', '\f'), so that a reader stops at the first bad token. Every
+// token is parsed by hand or with <charconv>, so neither the global C locale
+// nor the locale imbued in a user's stream changes what is read or written, and
+// arbitrary bytes (a binary file given by mistake) only ever give MALFORMED.
+// Readers report the reason of a failure, with its line, into the string of
+// the named parameter `error_message`.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <istream>
@@ -243,125 +251,248 @@ void append_integer(std::string& out, Integer x)
   out.append(buffer, result.ptr);
 }
 
-// Reads what is left of `is` into `text`. Returns false if the stream is not
-// readable or a read error occurs.
-inline bool read_whole_stream(std::istream& is, std::string& text)
+// The outcome of reading a whole input.
+enum class Read_status
+{
+  OK,
+  MISSING,       // no such file
+  DIRECTORY,     // a directory, not a file
+  CANNOT_OPEN,   // the stream or file cannot be read
+  TOO_LARGE,     // more than the size limit
+  BINARY         // a NUL byte in a text format
+};
+
+// Reads what is left of `is` into `text`, at most `limit` bytes, in chunks, so
+// that an endless input (/dev/zero, a pipe) is refused after `limit` bytes, and
+// a text input holding a NUL byte (binary data) after the chunk that holds it.
+inline Read_status read_bounded(std::istream& is, std::size_t limit, bool text_only, std::string& text)
 {
   if(!is.good())
-    return false;
-  std::ostringstream buffer;
-  buffer << is.rdbuf();
-  if(is.bad())
-    return false;
-  text = buffer.str();
-  return true;
+    return Read_status::CANNOT_OPEN;
+  std::string result;
+  char buffer[1 << 16];
+  while(true)
+  {
+    is.read(buffer, sizeof(buffer));
+    const std::size_t count = std::size_t(is.gcount());
+    if(count > 0)
+    {
+      if(text_only && std::memchr(buffer, '\0', count) != nullptr)
+        return Read_status::BINARY;
+      if(count > limit - (std::min)(limit, result.size()))
+        return Read_status::TOO_LARGE;
+      result.append(buffer, count);
+    }
+    if(is.bad())
+      return Read_status::CANNOT_OPEN;
+    if(!is)
+      break;  // end of input
+  }
+  text = std::move(result);
+  return Read_status::OK;
 }
 
-inline bool read_whole_file(const std::string& filename, std::string& text)
+// Reads the file `filename` as read_bounded() does. A regular file larger than
+// `limit` is refused before it is read.
+inline Read_status read_file_bounded(const std::string& filename, std::size_t limit, bool text_only,
+                                     std::string& text)
 {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if(std::filesystem::is_directory(std::filesystem::path(filename), ec))
-    return false;  // opening a directory may succeed, reading it fails
+  const fs::path path(filename);
+  if(filename.empty() || !fs::exists(path, ec))
+    return Read_status::MISSING;
+  if(fs::is_directory(path, ec))
+    return Read_status::DIRECTORY;  // opening a directory may succeed, reading it fails
+  if(fs::is_regular_file(path, ec))
+  {
+    const auto size = fs::file_size(path, ec);
+    if(!ec && size > limit)
+      return Read_status::TOO_LARGE;
+  }
   std::ifstream in(filename, std::ios::in | std::ios::binary);
   if(!in)
-    return false;
-  return read_whole_stream(in, text);
+    return Read_status::CANNOT_OPEN;
+  return read_bounded(in, limit, text_only, text);
 }
 
-// Walks through the lines of a text, '\n' separated, '\r' kept (it is blank).
-class Line_reader
+// A text cut into lines at '\n' ('\r' is blank), and lines into tokens at
+// blanks, read lazily: a reader takes one token at a time, so that it can stop
+// at the first bad one, and never holds more than one token of a line.
+// Lines are numbered from 1. Text after the comment character, if any, is
+// ignored to the end of its line.
+class Text_reader
 {
 public:
-  explicit Line_reader(std::string_view text) : m_text(text) {}
+  explicit Text_reader(std::string_view text, char comment = '\0') : m_text(text), m_comment(comment) {}
 
-  // Gets the next line; returns false at the end of the text.
-  bool next(std::string_view& line)
+  // Moves to the next line that holds a token; false at the end of the text.
+  bool next_line()
   {
-    if(m_position > m_text.size() || (m_position == m_text.size() && m_ended))
+    while(m_next < m_text.size() || (m_next == m_text.size() && !m_ended))
+    {
+      const std::size_t end = m_text.find('\n', m_next);
+      if(end == std::string_view::npos)
+      {
+        m_line = m_text.substr(m_next);
+        m_next = m_text.size();
+        m_ended = true;
+      }
+      else
+      {
+        m_line = m_text.substr(m_next, end - m_next);
+        m_next = end + 1;
+      }
+      ++m_line_number;
+      if(m_comment != '\0')
+      {
+        const std::size_t hash = m_line.find(m_comment);
+        if(hash != std::string_view::npos)
+          m_line = m_line.substr(0, hash);
+      }
+      m_position = 0;
+      skip_blanks();
+      if(m_position < m_line.size())
+        return true;
+    }
+    m_line = std::string_view();
+    m_position = 0;
+    return false;
+  }
+
+  // Gets the next token of the current line; false at the end of the line.
+  bool next_token(std::string_view& token)
+  {
+    skip_blanks();
+    if(m_position >= m_line.size())
       return false;
-    const std::size_t end = m_text.find('\n', m_position);
-    if(end == std::string_view::npos)
-    {
-      line = m_text.substr(m_position);
-      m_position = m_text.size();
-      m_ended = true;
-    }
-    else
-    {
-      line = m_text.substr(m_position, end - m_position);
-      m_position = end + 1;
-    }
+    const std::size_t begin = m_position;
+    while(m_position < m_line.size() && !is_blank(m_line[m_position]))
+      ++m_position;
+    token = m_line.substr(begin, m_position - begin);
     return true;
   }
 
+  // Gets the next token, on this line or a later one (formats whose line
+  // breaks carry no meaning); false at the end of the text.
+  bool next_token_anywhere(std::string_view& token)
+  {
+    while(!next_token(token))
+      if(!next_line())
+        return false;
+    return true;
+  }
+
+  // Whether the current line holds another token.
+  bool line_has_more()
+  {
+    skip_blanks();
+    return m_position < m_line.size();
+  }
+
+  // The number of the current line, from 1 (0 before the first).
+  std::size_t line_number() const { return m_line_number; }
+
 private:
+  void skip_blanks()
+  {
+    while(m_position < m_line.size() && is_blank(m_line[m_position]))
+      ++m_position;
+  }
+
   std::string_view m_text;
-  std::size_t m_position = 0;
+  char m_comment;
+  std::string_view m_line;
+  std::size_t m_next = 0, m_position = 0, m_line_number = 0;
   bool m_ended = false;
 };
 
-// Cuts `line` at blanks into `tokens` (cleared first).
-inline void split_tokens(std::string_view line, std::vector<std::string_view>& tokens)
+// A token shortened for a message: at most 40 characters, non-printable bytes as '?'.
+inline std::string quoted(std::string_view token)
 {
-  tokens.clear();
-  std::size_t i = 0;
-  while(i < line.size())
-  {
-    while(i < line.size() && is_blank(line[i]))
-      ++i;
-    const std::size_t begin = i;
-    while(i < line.size() && !is_blank(line[i]))
-      ++i;
-    if(i > begin)
-      tokens.push_back(line.substr(begin, i - begin));
-  }
+  std::string s = "'";
+  for(std::size_t i = 0; i < token.size() && i < 40; ++i)
+    s += (token[i] >= 0x20 && token[i] < 0x7f) ? token[i] : '?';
+  if(token.size() > 40)
+    s += "...";
+  return s + "'";
 }
 
-// Gets the tokens of the next line that has any; returns false at the end of the text.
-inline bool next_nonblank_line(Line_reader& lines, std::vector<std::string_view>& tokens,
-                               char comment = '\0')
-{
-  std::string_view line;
-  while(lines.next(line))
-  {
-    if(comment != '\0')
-    {
-      const std::size_t hash = line.find(comment);
-      if(hash != std::string_view::npos)
-        line = line.substr(0, hash);
-    }
-    split_tokens(line, tokens);
-    if(!tokens.empty())
-      return true;
-  }
-  tokens.clear();
-  return false;
-}
-
-// Whitespace-separated tokens of a whole text, one at a time (for formats
-// such as .dmat whose line breaks carry no meaning).
-class Token_reader
+// Where a reader reports the reason of a failure, and the numbers it is given.
+class Diagnostic
 {
 public:
-  explicit Token_reader(std::string_view text) : m_text(text) {}
+  explicit Diagnostic(std::string* message = nullptr) : m_message(message) {}
 
-  bool next(std::string_view& token)
+  // Records `what` (when a message is wanted) and returns `code`.
+  Error_code fail(Error_code code, const std::string& what) const
   {
-    while(m_position < m_text.size() && (is_blank(m_text[m_position]) || m_text[m_position] == '\n'))
-      ++m_position;
-    if(m_position == m_text.size())
-      return false;
-    const std::size_t begin = m_position;
-    while(m_position < m_text.size() && !is_blank(m_text[m_position]) && m_text[m_position] != '\n')
-      ++m_position;
-    token = m_text.substr(begin, m_position - begin);
-    return true;
+    if(m_message != nullptr)
+      *m_message = what;
+    return code;
   }
 
+  // As fail(), with the line of `reader` in front.
+  Error_code fail_at(const Text_reader& reader, Error_code code, const std::string& what) const
+  {
+    return fail(code, "line " + std::to_string(reader.line_number()) + ": " + what);
+  }
+
+  bool wanted() const { return m_message != nullptr; }
+
 private:
-  std::string_view m_text;
-  std::size_t m_position = 0;
+  std::string* m_message;
 };
+
+// Maps the status of a read to an error code, with a message (after `context`).
+inline Error_code read_error(Read_status status, std::size_t limit, const Diagnostic& diagnostic,
+                             const std::string& context)
+{
+  switch(status)
+  {
+    case Read_status::OK: return Error_code::SUCCESS;
+    case Read_status::MISSING: return diagnostic.fail(Error_code::CANNOT_OPEN_FILE, context + "does not exist");
+    case Read_status::DIRECTORY: return diagnostic.fail(Error_code::CANNOT_OPEN_FILE, context + "is a directory");
+    case Read_status::CANNOT_OPEN: return diagnostic.fail(Error_code::CANNOT_OPEN_FILE, context + "cannot be read");
+    case Read_status::TOO_LARGE:
+      return diagnostic.fail(Error_code::FILE_TOO_LARGE,
+                             context + "larger than the size limit of " + std::to_string(limit) + " bytes");
+    case Read_status::BINARY: return diagnostic.fail(Error_code::MALFORMED_FILE, context + "binary data (a NUL byte) in a text format");
+  }
+  return Error_code::MALFORMED_FILE;
+}
+
+// The size limit and the message of the named parameters `np` of a reader,
+// and the reading of its text input (a file name or a stream) under them.
+template <typename NamedParameters>
+std::size_t maximum_file_size(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, Polyvector_fields::internal_np::maximum_file_size), default_maximum_file_size);
+}
+
+template <typename NamedParameters>
+Diagnostic diagnostic(const NamedParameters& np)
+{
+  return Diagnostic(CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, Polyvector_fields::internal_np::error_message), static_cast<std::string*>(nullptr)));
+}
+
+template <typename NamedParameters>
+Error_code read_text(const std::string& filename, std::string& text, const NamedParameters& np,
+                     const std::string& context = std::string())
+{
+  const std::size_t limit = maximum_file_size(np);
+  return read_error(read_file_bounded(filename, limit, true, text), limit, diagnostic(np), context);
+}
+
+template <typename NamedParameters>
+Error_code read_text(std::istream& is, std::string& text, const NamedParameters& np,
+                     const std::string& context = std::string())
+{
+  const std::size_t limit = maximum_file_size(np);
+  return read_error(read_bounded(is, limit, true, text), limit, diagnostic(np), context);
+}
 
 } // namespace internal
 } // namespace IO

@@ -1,0 +1,302 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+// IO::read_triangle_mesh(): each refusal has its own message, each repair is
+// counted, and the source face of every output face is right; bounded reading
+// of every reader (size limit, binary data, endless input).
+
+#include "io_test_support.h"
+
+#include <CGAL/Polyvector_fields/IO/constraints.h>
+#include <CGAL/Polyvector_fields/IO/rawfield.h>
+#include <CGAL/Polyvector_fields/IO/read_triangle_mesh.h>
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace PVF = CGAL::Polyvector_fields;
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+
+struct Read
+{
+  PVF::Error_code code;
+  std::string message;
+  PVF::IO::Mesh_repair_report report;
+  std::size_t faces = 0;
+};
+
+template <typename TriangleMesh = Mesh>
+Read read_text(const std::string& name, const std::string& text, bool repair, TriangleMesh* out = nullptr)
+{
+  pvf_io_test::Scratch_directory dir("mesh_input");
+  {
+    std::ofstream file(dir.file(name), std::ios::binary);
+    file << text;
+  }
+  TriangleMesh tm;
+  Read r;
+  r.code = PVF::IO::read_triangle_mesh(dir.file(name), tm, r.report,
+                                       PVF::parameters::repair(repair, PVF::parameters::error_message(r.message)));
+  r.faces = num_faces(tm);
+  if(out)
+    *out = tm;
+  return r;
+}
+
+const std::string tetrahedron_points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+
+} // namespace
+
+TEST(MeshInput, EachRefusalNamesItsCause)
+{
+  struct Case
+  {
+    const char* file;
+    std::string text;
+    PVF::Error_code code;
+    const char* message;
+  };
+  const Case cases[] = {
+    { "a.off", "OFF\n4 2 0\n0 0 0\n1 0 nan\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n", PVF::Error_code::NON_FINITE_VALUE,
+      "line 4: vertex 1 has the non-finite coordinate 'nan'" },
+    { "a.off", "OFF\n4 2 0\n" + tetrahedron_points + "3 0 1 2\n3 0 2 7\n", PVF::Error_code::MALFORMED_FILE,
+      "line 8: face 1 uses vertex 7, not in 0..3" },
+    { "a.off", "OFF\n4 2 0\n" + tetrahedron_points + "3 0 1 1\n3 0 2 3\n", PVF::Error_code::DEGENERATE_FACE,
+      "face 0 (line 7) repeats vertex 1 (line 4)" },
+    { "a.off", "OFF\n4 3 0\n" + tetrahedron_points + "3 0 1 2\n3 0 2 3\n3 2 0 1\n", PVF::Error_code::DUPLICATE_FACE,
+      "face 2 (line 9) has the same vertices as face 0 (line 7)" },
+    { "a.off", "OFF\n5 3 0\n" + tetrahedron_points + "0 -1 0\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+      PVF::Error_code::NON_MANIFOLD_MESH, "the edge between vertices 0 and 1 is shared by 3 faces" },
+    { "a.off", "OFF\n4 2 0\n" + tetrahedron_points + "3 0 1 2\n3 0 1 3\n", PVF::Error_code::NON_MANIFOLD_MESH,
+      "face 0 (line 7) and face 1 (line 8) are oriented inconsistently" },
+    { "a.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n", PVF::Error_code::NON_MANIFOLD_MESH,
+      "vertex 0 (line 3) is pinched: its faces form 2 separate fans" },
+    { "a.off", "OFF\n4 1 0\n" + tetrahedron_points + "4 0 1 2 3\n", PVF::Error_code::NON_TRIANGLE_FACE,
+      "face 0 (line 7) has 4 vertices: the mesh is not a triangle mesh" },
+    { "a.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 0 1\n3 0 1 2\n3 0 2 3\n", PVF::Error_code::DEGENERATE_FACE,
+      "face 0 (line 7) is degenerate" },
+    { "a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", PVF::Error_code::MALFORMED_FILE,
+      "line 4: face 0 uses vertex 0 (OBJ indices start at 1)" },
+    { "a.off", "OFF BINARY\n", PVF::Error_code::UNSUPPORTED_FORMAT, "binary OFF is not supported" },
+    { "a.xyz", "0 0 0\n", PVF::Error_code::UNSUPPORTED_FORMAT, "the extension '.xyz'" },
+    { "a.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", PVF::Error_code::EMPTY_MESH, "the file has no face" },
+    { "a.off", std::string("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\0 0\n3 0 1 2\n", 36), PVF::Error_code::MALFORMED_FILE,
+      "binary data" },
+  };
+  for(const Case& c : cases)
+  {
+    const Read r = read_text(c.file, c.text, false);
+    EXPECT_EQ(r.code, c.code) << c.text;
+    EXPECT_NE(r.message.find(c.message), std::string::npos) << "got: " << r.message;
+    EXPECT_EQ(r.faces, 0u) << "the mesh must be left as it was";
+  }
+}
+
+TEST(MeshInput, RepairsAndCountsWhatItChanged)
+{
+  // A quad cube: 6 quads, each split into 2 triangles with its source.
+  Mesh cube;
+  const Read quads =
+    read_text("cube.off",
+              "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n"
+              "4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n",
+              true, &cube);
+  ASSERT_EQ(quads.code, PVF::Error_code::SUCCESS) << quads.message;
+  EXPECT_EQ(quads.report.triangulated_faces, 6u);
+  EXPECT_EQ(num_faces(cube), 12u);
+  EXPECT_TRUE(CGAL::is_triangle_mesh(cube));
+  EXPECT_TRUE(CGAL::is_closed(cube));
+  std::map<std::size_t, int> per_source;
+  for(std::size_t s : quads.report.source_face)
+    ++per_source[s];
+  ASSERT_EQ(per_source.size(), 6u);
+  for(const auto& entry : per_source)
+    EXPECT_EQ(entry.second, 2) << "file face " << entry.first;
+  // Each triangle lies in the plane of its source quad: face 0 of the file is z = 0.
+  std::size_t i = 0;
+  for(auto f : faces(cube))
+  {
+    if(quads.report.source_face[i++] != 0)
+      continue;
+    for(auto v : vertices_around_face(halfedge(f, cube), cube))
+      EXPECT_EQ(cube.point(v).z(), 0.0);
+  }
+
+  // Duplicate face, inconsistent orientation, a repeated vertex and an isolated vertex.
+  const Read soup = read_text("soup.off",
+                              "OFF\n6 5 0\n" + tetrahedron_points + "5 5 5\n0 0 -1\n"
+                              "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 1 2 0\n",
+                              true);
+  ASSERT_EQ(soup.code, PVF::Error_code::SUCCESS) << soup.message;
+  EXPECT_EQ(soup.report.duplicate_faces, 1u);
+  EXPECT_EQ(soup.report.isolated_vertices, 2u);
+  EXPECT_EQ(soup.faces, 4u);
+
+  const Read flipped = read_text("flip.off", "OFF\n4 4 0\n" + tetrahedron_points + "3 0 2 1\n3 0 1 3\n3 2 1 3\n3 0 3 2\n",
+                                 true);
+  ASSERT_EQ(flipped.code, PVF::Error_code::SUCCESS) << flipped.message;
+  EXPECT_EQ(flipped.report.reoriented_faces, 1u);
+
+  const Read repeated = read_text("rep.off", "OFF\n5 3 0\n" + tetrahedron_points + "0 -1 0\n3 0 1 2\n4 0 3 3 1\n3 0 4 1\n",
+                                  true);
+  ASSERT_EQ(repeated.code, PVF::Error_code::SUCCESS) << repeated.message;
+  EXPECT_EQ(repeated.report.degenerate_polygons, 1u);
+  EXPECT_EQ(repeated.faces, 3u);
+
+  // An STL-like soup: every triangle with its own points, merged into one closed surface.
+  std::string separate = "OFF\n12 4 0\n";
+  const char* tri[4][3] = { { "0 0 0", "0 1 0", "1 0 0" }, { "0 0 0", "1 0 0", "0 0 1" },
+                            { "1 0 0", "0 1 0", "0 0 1" }, { "0 0 0", "0 0 1", "0 1 0" } };
+  for(const auto& t : tri)
+    for(const char* p : t)
+      separate += std::string(p) + "\n";
+  separate += "3 0 1 2\n3 3 4 5\n3 6 7 8\n3 9 10 11\n";
+  Mesh merged;
+  const Read stl = read_text("separate.off", separate, true, &merged);
+  ASSERT_EQ(stl.code, PVF::Error_code::SUCCESS) << stl.message;
+  EXPECT_EQ(stl.report.merged_points, 8u);
+  EXPECT_EQ(num_vertices(merged), 4u);
+  EXPECT_TRUE(CGAL::is_closed(merged));
+
+  // A zero-area triangle in a fan is collapsed away.
+  const Read degenerate =
+    read_text("degen.off", "OFF\n5 4 0\n0 0 0\n2 0 0\n1 1 0\n1 0 0\n1 -1 0\n3 0 3 2\n3 3 1 2\n3 0 1 3\n3 0 4 1\n", true);
+  ASSERT_EQ(degenerate.code, PVF::Error_code::SUCCESS) << degenerate.message;
+  EXPECT_GE(degenerate.report.degenerate_faces, 1u);
+}
+
+TEST(MeshInput, SurfaceMeshAndPolyhedronAgree)
+{
+  const std::string quads = "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n"
+                            "4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+  const Read a = read_text<Mesh>("cube.off", quads, true);
+  const Read b = read_text<Polyhedron>("cube.off", quads, true);
+  ASSERT_EQ(a.code, PVF::Error_code::SUCCESS);
+  ASSERT_EQ(b.code, PVF::Error_code::SUCCESS);
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.report.source_face, b.report.source_face);
+  for(const char* name : { "bumpy.off", "inspired_mesh.obj", "fandisk.off" })
+  {
+    Mesh tm;
+    PVF::IO::Mesh_repair_report report;
+    ASSERT_EQ(PVF::IO::read_triangle_mesh(pvf_io_test::data_file(name), tm, report, PVF::parameters::repair(false)),
+              PVF::Error_code::SUCCESS)
+      << name;
+    const Mesh reference = pvf_io_test::load_mesh<Mesh>(name);
+    ASSERT_EQ(num_faces(tm), num_faces(reference)) << name;
+    EXPECT_FALSE(report.changed()) << name;
+    auto p = vertices(tm).begin();
+    for(auto v : vertices(reference))
+      EXPECT_EQ(tm.point(*p++), reference.point(v)) << name;
+  }
+}
+
+TEST(BoundedReading, SizeLimitBinaryDataAndEndlessInput)
+{
+  const Mesh tm = pvf_io_test::load_mesh<Mesh>("bumpy.off");
+  typedef std::vector<PVF::Face_constraint<Mesh::Face_index, Kernel::Vector_3> > Constraints;
+  pvf_io_test::Scratch_directory dir("bounded");
+  const std::string big = dir.file("big.txt");
+  {
+    std::ofstream out(big);
+    for(int i = 0; i < 2000; ++i)
+      out << i << " 1 0 0\n";
+  }
+  Constraints constraints;
+  std::string message;
+  // The file holds ~19 kB: a 10 kB limit refuses it before it is read.
+  EXPECT_EQ(PVF::IO::read_constraints(big, tm, constraints,
+                                      PVF::parameters::maximum_file_size(10000, PVF::parameters::error_message(message))),
+            PVF::Error_code::FILE_TOO_LARGE);
+  EXPECT_NE(message.find("larger than the size limit of 10000 bytes"), std::string::npos) << message;
+  EXPECT_TRUE(constraints.empty());
+  EXPECT_EQ(PVF::IO::read_constraints(big, tm, constraints), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(constraints.size(), 2000u);
+
+  // A stream that never ends (an endless generator behind a streambuf) is
+  // refused once the limit is passed.
+  struct Endless : std::streambuf
+  {
+    char buffer[4096];
+    int_type underflow() override
+    {
+      std::fill(buffer, buffer + sizeof buffer, '1');
+      setg(buffer, buffer, buffer + sizeof buffer);
+      return traits_type::to_int_type('1');
+    }
+  } endless;
+  std::istream endless_stream(&endless);
+  Constraints none;
+  EXPECT_EQ(PVF::IO::read_constraints(endless_stream, tm, none, PVF::parameters::maximum_file_size(1 << 20)),
+            PVF::Error_code::FILE_TOO_LARGE);
+
+  std::istringstream binary(std::string("0 1 0 0\n\0\n", 10));
+  EXPECT_EQ(PVF::IO::read_constraints(binary, tm, none, PVF::parameters::error_message(message)),
+            PVF::Error_code::MALFORMED_FILE);
+  EXPECT_NE(message.find("binary data"), std::string::npos) << message;
+
+  // Readers stop at the first bad token and say where it is.
+  std::istringstream bad("0 1 0 0\n1 0 1 0\n2 1 x 0\n3 1 0 0\n");
+  EXPECT_EQ(PVF::IO::read_constraints(bad, tm, none, PVF::parameters::error_message(message)),
+            PVF::Error_code::MALFORMED_FILE);
+  EXPECT_EQ(message, "line 3: 'x' is not a number");
+  std::istringstream too_many("0 1 0 0 0 1 0 1 1 0\n");
+  EXPECT_EQ(PVF::IO::read_constraints(too_many, tm, none,
+                                      PVF::parameters::expected_degree(2, PVF::parameters::error_message(message))),
+            PVF::Error_code::TOO_MANY_CONSTRAINT_VECTORS);
+  EXPECT_EQ(message, "line 1: face 0 has more than 2 vectors (the degree is 2)");
+  EXPECT_TRUE(none.empty());
+
+  // The rawfield reader's messages.
+  std::istringstream short_field("4 2496\n1 0 0 0 1 0 -1 0 0 0 -1 0\n");
+  typedef std::map<Mesh::Face_index, std::vector<Kernel::Vector_3> > Roots;
+  Roots roots;
+  std::size_t N = 0;
+  EXPECT_EQ(PVF::IO::read_rawfield(short_field, tm, boost::make_assoc_property_map(roots), N,
+                                   PVF::parameters::error_message(message)),
+            PVF::Error_code::MALFORMED_FILE);
+  EXPECT_EQ(message, "the file ends after 1 of 2496 faces");
+  EXPECT_TRUE(roots.empty());
+}
+
+TEST(BoundedReading, ConstraintsById)
+{
+  pvf_io_test::Scratch_directory dir("by_id");
+  {
+    std::ofstream out(dir.file("c.txt"));
+    out << "5 1 0 0\n2 0 1 0 1 0 0\n";
+  }
+  std::vector<PVF::Face_constraint<std::size_t, Kernel::Vector_3> > by_id;
+  ASSERT_EQ(PVF::IO::read_constraints_by_id(dir.file("c.txt"), 6, by_id), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(by_id.size(), 2u);
+  EXPECT_EQ(by_id[0].face, 5u);
+  EXPECT_EQ(by_id[1].face, 2u);
+  EXPECT_EQ(by_id[1].vectors.size(), 2u);
+  std::string message;
+  EXPECT_EQ(PVF::IO::read_constraints_by_id(dir.file("c.txt"), 5, by_id, PVF::parameters::error_message(message)),
+            PVF::Error_code::INVALID_FACE);
+  EXPECT_EQ(message, "line 1: face id '5' is not in 0..4 (the mesh has 5 faces)");
+  EXPECT_EQ(PVF::IO::read_constraints_by_id(dir.file("none.txt"), 5, by_id, PVF::parameters::error_message(message)),
+            PVF::Error_code::CANNOT_OPEN_FILE);
+  EXPECT_EQ(message, "does not exist");
+}

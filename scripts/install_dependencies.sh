@@ -15,7 +15,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libgtest-dev
-          libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev doxygen)
+          libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libopenmesh-dev doxygen)
 for arg in "$@"; do
   case "$arg" in
     --doc) packages+=(python3-matplotlib) ;;

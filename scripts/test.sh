@@ -7,8 +7,10 @@
 # It is not part of CGAL.
 #
 # Installs what is missing, builds everything in build/ and runs all tests;
-# then builds the unit tests again in build-sanitize/ with AddressSanitizer and
-# UndefinedBehaviorSanitizer (GCC, -O1, assertions on) and runs them.
+# then builds the tests that take untrusted input (label "sanitize": the core
+# and io groups and the fuzz corpus replay) again in build-sanitize/ with
+# AddressSanitizer and UndefinedBehaviorSanitizer (GCC, -O1, assertions on) and
+# runs them.
 # Exits non-zero when anything fails. Works from any directory.
 #   bash scripts/test.sh                  everything
 #   bash scripts/test.sh --no-sanitizers  only the first part
@@ -37,8 +39,8 @@ if [ "$sanitizers" = 1 ]; then
   flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
   cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON \
         "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
-  cmake --build build-sanitize -j2 --target pvf_unit_tests
+  cmake --build build-sanitize -j2 --target pvf_sanitized_tests
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-sanitize --output-on-failure -j2 --no-tests=error -L unit
+    ctest --test-dir build-sanitize --output-on-failure -j2 --no-tests=error -L sanitize
   echo "test.sh: everything, sanitizers included, took $(( $(date +%s) - start )) s"
 fi

@@ -216,7 +216,7 @@ End_to_end_times design_end_to_end(const Mesh& tm, const std::vector<Constraint>
   }
   const auto roots_start = std::chrono::steady_clock::now();
   const std::vector<Complex>& c = designer.coefficient_array();
-  const std::size_t F = designer.connection().number_of_faces();
+  const std::size_t F = designer.tangent_bundle().number_of_faces();
   std::vector<std::array<double, 3> > local_roots;
   std::vector<std::array<double, 3> >& world = world_roots ? *world_roots : local_roots;
   world.resize(4 * F);
@@ -224,7 +224,7 @@ End_to_end_times design_end_to_end(const Mesh& tm, const std::vector<Constraint>
   PVF::internal::field_roots<ConcurrencyTag>(c, 4, true, roots);  // what compute_field_roots() does
   for(std::size_t f = 0; f < F; ++f)
   {
-    const PVF::Face_frame& frame = designer.connection().frame(f);
+    const PVF::Face_frame& frame = designer.tangent_bundle().frame(f);
     for(std::size_t k = 0; k < 4; ++k)
       world[4 * f + k] = frame.to_world(roots[4 * f + k]);
   }

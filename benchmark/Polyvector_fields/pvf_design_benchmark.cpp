@@ -15,7 +15,7 @@
 #include "pvf_benchmark_common.h"
 
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
 
 #include <benchmark/benchmark.h>
@@ -42,7 +42,7 @@ void BM_connection(benchmark::State& state)
   const Mesh& tm = bumpy(int(state.range(0)));
   for(auto _ : state)
   {
-    PVF::Levi_civita_connection<Mesh> connection(tm);
+    PVF::Tangent_bundle<Mesh> connection(tm);
     benchmark::DoNotOptimize(connection.number_of_faces());
   }
   state.counters["faces"] = double(tm.number_of_faces());

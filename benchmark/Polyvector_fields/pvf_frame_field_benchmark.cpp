@@ -54,7 +54,7 @@ void BM_conjugate_inspired(benchmark::State& state)
   for(auto _ : state)
   {
     auto coefficients = boost::dummy_property_map();
-    if(PVF::design_conjugate_frame_field(tm, 4, constraints, coefficients, result,
+    if(PVF::design_conjugate_frame_field(tm, constraints, coefficients, result,
                                          CGAL::parameters::sparse_linear_solver(Solver())) != PVF::Error_code::SUCCESS)
     {
       state.SkipWithError("design_conjugate_frame_field failed");
@@ -86,7 +86,7 @@ void BM_conjugate_per_iteration(benchmark::State& state)
     auto coefficients = boost::dummy_property_map();
     const auto start = std::chrono::steady_clock::now();
     const PVF::Error_code code = PVF::design_conjugate_frame_field(
-      tm, 4, constraints, coefficients, result,
+      tm, constraints, coefficients, result,
       PVF::parameters::tolerance(1e-300, CGAL::parameters::sparse_linear_solver(Solver()).number_of_iterations(steps)));
     if(code != PVF::Error_code::SUCCESS || result.iterations != steps)
       return -1.0;
@@ -123,7 +123,7 @@ void BM_angle_bound_bumpy(benchmark::State& state)
   for(auto _ : state)
   {
     auto coefficients = boost::dummy_property_map();
-    if(PVF::design_angle_bounded_frame_field(tm, 4, constraints, coefficients, result,
+    if(PVF::design_angle_bounded_frame_field(tm, constraints, coefficients, result,
                                              PVF::parameters::angle_bound(70.0 * CGAL_PI / 180.0,
                                                                           CGAL::parameters::sparse_linear_solver(Solver()))) !=
        PVF::Error_code::SUCCESS)

@@ -702,16 +702,16 @@ std::string constraint_failure(PVF::Error_code code, const Constraint& c, const 
   m << "constraint on face " << std::size_t(c.face) << ": ";
   if(code == PVF::Error_code::VALUE_OUT_OF_RANGE)
   {
-    // The first vector whose length L has L^N outside [1e-100, 1e100].
+    // The first vector whose length L has L^N outside [1e-300, 1e300].
     for(const Vector& v : c.vectors)
     {
       std::array<double, 3> w = { v.x(), v.y(), v.z() };
       const int e = PVF::internal::scale_to_unit({ &w });
       const double log10_length = std::log10(std::sqrt(PVF::internal::dot(w, w))) + e * std::log10(2.0);
-      if(std::abs(double(o.degree) * log10_length) > 100)
+      if(std::abs(double(o.degree) * log10_length) > 300)
       {
         m << "a vector of length " << std::pow(10.0, log10_length) << " is out of range for degree " << o.degree
-          << " (the package needs 1e-100 <= length^" << o.degree << " <= 1e100)";
+          << " (the package needs 1e-300 <= length^" << o.degree << " <= 1e300)";
         return m.str();
       }
     }
@@ -727,7 +727,7 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
   Field field;
   PVF::Polyvector_field_designer<Mesh> designer(tm, o.degree, PVF::parameters::sign_symmetric(o.sign_symmetric));
   check(designer.status(), "mesh '" + o.mesh + "'");
-  field.components = designer.connection().number_of_components();
+  field.components = designer.tangent_bundle().number_of_components();
   clock.lap("frames and connection");
   for(const Constraint& c : constraints.list)
   {
@@ -737,7 +737,12 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
     (c.vectors.size() == o.vectors_per_constraint() ? field.full : field.partial) += 1;
   }
   field.coefficients = tm.add_property_map<Face, std::vector<Complex> >("f:pvf_coefficients").first;
-  check(designer.solve(field.coefficients), "design");
+  const PVF::Error_code solved = designer.solve(field.coefficients);
+  check(solved, "design",
+        solved != PVF::Error_code::VALUE_OUT_OF_RANGE
+          ? std::string()
+          : "the constraint vectors' lengths are too far apart for degree " + std::to_string(o.degree) +
+              ": each length L needs 1e-100 <= (L / sigma)^N <= 1e100, sigma their geometric mean");
   clock.lap("design");
   field.statistics = designer.statistics();
   field.smooth_energy = PVF::smoothness_energy(tm, o.degree, field.coefficients);
@@ -747,9 +752,9 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
   {
     PVF::Angle_bound_result result;
     const auto np = PVF::parameters::angle_bound(o.angle_bound_degrees * CGAL_PI / 180);
-    check(o.iterations ? PVF::design_angle_bounded_frame_field(tm, 4, constraints.list, field.coefficients, result,
+    check(o.iterations ? PVF::design_angle_bounded_frame_field(tm, constraints.list, field.coefficients, result,
                                                                 np.number_of_iterations(o.iterations))
-                       : PVF::design_angle_bounded_frame_field(tm, 4, constraints.list, field.coefficients, result, np),
+                       : PVF::design_angle_bounded_frame_field(tm, constraints.list, field.coefficients, result, np),
           "angle bound");
     report << "angle bound     " << o.angle_bound_degrees << " degrees: " << (result.converged ? "converged" : "NOT converged")
            << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
@@ -763,9 +768,9 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
     PVF::Conjugate_field_result result;
     const auto np = PVF::parameters::principal_curvature_map(curvature.map,
                                                              PVF::parameters::orthogonality_weight(o.orthogonality));
-    check(o.iterations ? PVF::design_conjugate_frame_field(tm, 4, constraints.list, field.coefficients, result,
+    check(o.iterations ? PVF::design_conjugate_frame_field(tm, constraints.list, field.coefficients, result,
                                                             np.number_of_iterations(o.iterations))
-                       : PVF::design_conjugate_frame_field(tm, 4, constraints.list, field.coefficients, result, np),
+                       : PVF::design_conjugate_frame_field(tm, constraints.list, field.coefficients, result, np),
           "conjugate field");
     report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
            << " iterations (orthogonality weight " << o.orthogonality << "); residual sum |u^T S v| (unit-size field): "
@@ -860,7 +865,8 @@ void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& const
     for(const Constraint& c : constraints.list)
       constrained.push_back(c.face);
     outputs.set(o.out_vtk, to_string([&](std::ostream& s) {
-                  return PVF::IO::write_vtk(s, tm, a.roots, o.degree, a.singularities, a.face_arrays, constrained);
+                  return PVF::IO::write_vtk(s, tm, a.roots, o.degree, a.singularities,
+                                            PVF::parameters::face_scalars(a.face_arrays, PVF::parameters::constrained_faces(constrained)));
                 }, o.out_vtk));
   }
   if(!o.out_mesh.empty())

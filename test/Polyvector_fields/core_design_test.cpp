@@ -260,7 +260,7 @@ namespace {
 // The degree-0 connection Laplacian (dense) of a mesh: A = D^H D.
 Eigen::MatrixXcd dense_connection_laplacian(const Mesh& tm, std::size_t N)
 {
-  PVF::Levi_civita_connection<Mesh> connection(tm);
+  PVF::Tangent_bundle<Mesh> connection(tm);
   const Eigen::Index F = Eigen::Index(connection.number_of_faces());
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(F, F);
   for(const auto& e : connection.interior_edges())
@@ -288,7 +288,7 @@ TEST(Design, UnconstrainedComponentIsSmallestEigenvector)
     const Eigen::MatrixXcd A = dense_connection_laplacian(tm, N);
     const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>(A).eigenvalues()[0];
     Eigen::VectorXcd x(A.rows());
-    PVF::Levi_civita_connection<Mesh> connection(tm);
+    PVF::Tangent_bundle<Mesh> connection(tm);
     double mean_square = 0;
     for(Face f : faces(tm))
     {
@@ -342,6 +342,17 @@ TEST(Design, MeshWithBoundary)
   for(const Constraint& c : constraints)
     EXPECT_LT(set_distance(field.roots[c.face], expected_roots(tm, c, true)), 1e-10);
   EXPECT_TRUE(std::isfinite(PVF::smoothness_energy(tm, 4, field.coefficients)));
+
+  // The natural boundary condition: boundary edges carry no term, so on a flat
+  // square with one constraint the field is that constraint everywhere, up to
+  // the boundary (any term at the boundary would pull it away there).
+  Mesh square = grid(6, 6);
+  const Constraint c{ Face(17), { Vector(1, 2, 0), Vector(-3, 1, 0) } };
+  Field flat = design(square, 4, std::vector<Constraint>{ c }, PVF::parameters::sign_symmetric(true), "flat");
+  const std::vector<Vector> expected = expected_roots(square, c, true);
+  for(Face f : faces(square))
+    EXPECT_LT(set_distance(flat.roots[f], expected), 1e-12 * max_length(expected)) << "face " << f;
+  EXPECT_LT(PVF::smoothness_energy(square, 4, flat.coefficients), 1e-20);
 }
 
 // World-space roots do not depend on a rigid motion of the mesh and the constraints.
@@ -465,6 +476,39 @@ TEST(Designer, ResolveWithNewValues)
 }
 
 // Every Error_code has its own message.
+// A partial constraint whose number of vectors changes between two solves
+// gives rows of another shape: the factorization cannot be reused, and the
+// test of reuse must not compare matrices of different sizes (it aborted in
+// Debug builds and read out of bounds in Release builds).
+TEST(Designer, PartialConstraintChangesItsVectorCount)
+{
+  Mesh two;
+  auto a = two.add_vertex(Point(0, 0, 0)), b = two.add_vertex(Point(1, 0, 0)), c = two.add_vertex(Point(0, 1, 0)),
+       d = two.add_vertex(Point(1, 1, 0));
+  two.add_face(a, b, c);
+  two.add_face(b, d, c);
+  PVF::Polyvector_field_designer<Mesh> designer(two, 4);
+  const Vector u(1, 0, 0), v(0.5, 0.5, 0);
+  ASSERT_EQ(designer.add_constraint(Face(0), { u }), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
+  designer.clear_constraints();
+  ASSERT_EQ(designer.add_constraint(Face(0), { u, v }), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
+  EXPECT_FALSE(designer.statistics().factorization_reused);
+  // Both vectors are roots of face 0's polynomial now.
+  const std::vector<Complex>& coefficients = designer.coefficient_array();
+  PVF::Face_frame frame;
+  PVF::face_frame(Face(0), two, frame);
+  for(const Vector& w : { u, v })
+  {
+    const Complex z = frame.to_complex(w.x(), w.y(), w.z());
+    Complex p = std::pow(z, 4);
+    for(int m = 0; m < 4; ++m)
+      p += coefficients[std::size_t(m)] * std::pow(z, m);
+    EXPECT_LT(std::abs(p), 1e-12);
+  }
+}
+
 TEST(Errors, Messages)
 {
   std::set<std::string> messages;

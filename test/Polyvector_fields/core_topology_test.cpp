@@ -37,7 +37,7 @@ std::vector<PVF::Singularity<Vertex> > singularities(Mesh& tm, std::size_t N, bo
   auto cmap = tm.add_property_map<Face, std::vector<Complex> >("f:c").first;
   EXPECT_EQ(PVF::design_polyvector_field(tm, N, constraints, cmap, PVF::parameters::sign_symmetric(sign_symmetric)),
             PVF::Error_code::SUCCESS);
-  PVF::Levi_civita_connection<Mesh> connection(tm);
+  PVF::Tangent_bundle<Mesh> connection(tm);
   std::vector<Complex> flat;
   EXPECT_EQ(PVF::internal::read_coefficients(connection, N, cmap, flat), PVF::Error_code::SUCCESS);
   double worst = 0;

@@ -76,7 +76,7 @@ TEST(AngleBound, BumpyAndFandisk)
               PVF::Error_code::SUCCESS);
     const double theta = 70 * degree;
     PVF::Angle_bound_result result;
-    ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, bounded, result, PVF::parameters::angle_bound(theta)),
+    ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, constraints, bounded, result, PVF::parameters::angle_bound(theta)),
               PVF::Error_code::SUCCESS);
     EXPECT_TRUE(result.converged) << name;
     EXPECT_GT(result.iterations, 0u);
@@ -140,7 +140,7 @@ TEST(Conjugate, TorusAndHyperbolicParaboloid)
     ASSERT_GT(constraints.size(), 5u) << named.name;
     auto field = tm.add_property_map<Face, std::vector<Complex> >("f:c").first;
     PVF::Conjugate_field_result result;
-    ASSERT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, result,
+    ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, result,
                                                 PVF::parameters::principal_curvature_map(curvatures)
                                                   .number_of_iterations(50)),
               PVF::Error_code::SUCCESS);
@@ -180,7 +180,7 @@ TEST(Conjugate, OrthogonalityWeightTrend)
   {
     auto field = tm.add_property_map<Face, std::vector<Complex> >("f:c" + std::to_string(w)).first;
     PVF::Conjugate_field_result result;
-    ASSERT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, result,
+    ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, result,
                                                 PVF::parameters::combine(
                                                   PVF::parameters::principal_curvature_map(curvatures).number_of_iterations(100),
                                                   PVF::parameters::orthogonality_weight(w))),
@@ -212,7 +212,7 @@ TEST(Conjugate, InspiredMesh)
   ASSERT_EQ(constraints.size(), 84u);
   auto field = tm.add_property_map<Face, std::vector<Complex> >("f:c").first;
   PVF::Conjugate_field_result result;
-  ASSERT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, result), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, result), PVF::Error_code::SUCCESS);
   EXPECT_TRUE(result.converged);
   EXPECT_LT(result.free_residual, 1e-4);
   EXPECT_LE(result.iterations, 50u);
@@ -232,7 +232,7 @@ TEST(Conjugate, RigidMotionAndPolyhedron)
     auto c = mesh.add_property_map<Face, std::vector<Complex> >("f:c" + name).first;
     auto r = mesh.add_property_map<Face, std::vector<Vector> >("f:r" + name).first;
     PVF::Conjugate_field_result result;
-    EXPECT_EQ(PVF::design_conjugate_frame_field(mesh, 4, cs, c, result, PVF::parameters::number_of_iterations(20)),
+    EXPECT_EQ(PVF::design_conjugate_frame_field(mesh, cs, c, result, PVF::parameters::number_of_iterations(20)),
               PVF::Error_code::SUCCESS);
     EXPECT_EQ(PVF::compute_field_roots(mesh, 4, c, r, PVF::parameters::sign_symmetric(true)), PVF::Error_code::SUCCESS);
     return r;
@@ -272,7 +272,7 @@ TEST(Conjugate, RigidMotionAndPolyhedron)
   std::map<P_face, std::vector<Complex> > coefficients;
   std::map<P_face, std::vector<Vector> > poly_roots;
   PVF::Conjugate_field_result result;
-  ASSERT_EQ(PVF::design_conjugate_frame_field(poly, 4, poly_constraints, boost::make_assoc_property_map(coefficients), result,
+  ASSERT_EQ(PVF::design_conjugate_frame_field(poly, poly_constraints, boost::make_assoc_property_map(coefficients), result,
                                               PVF::parameters::number_of_iterations(20)),
             PVF::Error_code::SUCCESS);
   ASSERT_EQ(PVF::compute_field_roots(poly, 4, boost::make_assoc_property_map(coefficients),
@@ -293,34 +293,30 @@ TEST(FrameFields, BadInput)
   PVF::Angle_bound_result ab;
   PVF::Conjugate_field_result cj;
   using PVF::Error_code;
-  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, 6, constraints, field, ab), Error_code::NOT_A_FRAME_FIELD);
-  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, 3, constraints, field, cj), Error_code::NOT_A_FRAME_FIELD);
-  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, field, ab, PVF::parameters::sign_symmetric(false)),
-            Error_code::NOT_A_FRAME_FIELD);
   for(double bad : { 0.0, -0.1, CGAL_PI / 2 + 1e-9, 3.0 })
-    EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, field, ab, PVF::parameters::angle_bound(bad)),
+    EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, constraints, field, ab, PVF::parameters::angle_bound(bad)),
               Error_code::INVALID_PARAMETER) << bad;
-  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, field, ab, PVF::parameters::angle_bound(std::nan(""))),
+  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, constraints, field, ab, PVF::parameters::angle_bound(std::nan(""))),
             Error_code::NON_FINITE_VALUE);
-  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, field, ab, PVF::parameters::initial_lambda(0.0)),
+  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, constraints, field, ab, PVF::parameters::initial_lambda(0.0)),
             Error_code::INVALID_PARAMETER);
-  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, field, ab, PVF::parameters::lambda_factor(0.5)),
+  EXPECT_EQ(PVF::design_angle_bounded_frame_field(tm, constraints, field, ab, PVF::parameters::lambda_factor(0.5)),
             Error_code::INVALID_PARAMETER);
-  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, cj, PVF::parameters::orthogonality_weight(-1.0)),
+  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, cj, PVF::parameters::orthogonality_weight(-1.0)),
             Error_code::INVALID_PARAMETER);
-  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, cj, PVF::parameters::tolerance(0.0)),
+  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, cj, PVF::parameters::tolerance(0.0)),
             Error_code::INVALID_PARAMETER);
-  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, cj, PVF::parameters::tolerance(std::nan(""))),
+  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, cj, PVF::parameters::tolerance(std::nan(""))),
             Error_code::NON_FINITE_VALUE);
   // A curvature map with a NaN.
   auto curvatures = tm.add_property_map<Face, Curvatures>("f:k").first;
   ASSERT_EQ(PVF::estimate_principal_curvatures(tm, curvatures), Error_code::SUCCESS);
   curvatures[Face(10)].k1 = std::nan("");
-  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, 4, constraints, field, cj, PVF::parameters::principal_curvature_map(curvatures)),
+  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, cj, PVF::parameters::principal_curvature_map(curvatures)),
             Error_code::NON_FINITE_VALUE);
   // Constraints with too many vectors for a frame field.
   std::vector<Constraint> three{ Constraint{ Face(0), { Vector(1, 0, 0), Vector(0, 1, 0), Vector(1, 1, 0) } } };
-  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, 4, three, field, cj), Error_code::TOO_MANY_CONSTRAINT_VECTORS);
+  EXPECT_EQ(PVF::design_conjugate_frame_field(tm, three, field, cj), Error_code::TOO_MANY_CONSTRAINT_VECTORS);
   for(Face f : faces(tm))
     ASSERT_EQ(field[f], std::vector<Complex>{ Complex(3) });
 }

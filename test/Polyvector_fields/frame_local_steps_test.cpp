@@ -196,36 +196,44 @@ TEST(FrameLocalSteps, ConjugacyResidualIsBilinearForm)
   EXPECT_EQ(PVFi::conjugacy_residual(S, Complex(1, 2), Complex(3, -1)), 11.);
 }
 
-// The root finder behind the secular equation: companion matrix, balancing,
-// generous acceptance of nearly real roots (a double root comes out as a
-// complex pair), Newton polish.
-TEST(FrameLocalSteps, ConjugacySecularRootFinder)
+// The certificate of global optimality (one quadratic constraint): at the
+// result y = (u, v), y0 - y = lambda grad(y^T H y)/2 = lambda H y with
+// H = 1/2 [[0, S], [S, 0]], and I + lambda H is positive semidefinite, i.e.
+// |lambda| max(|k1|, |k2|) / 2 <= 1. Checked on generic random inputs, where
+// the gradient is far from zero.
+TEST(FrameLocalSteps, ConjugacyMultiplierCertifiesGlobalMinimum)
 {
-  namespace impl = PVFi::conjugacy_projection_impl;
-  auto contains = [](const std::vector<double>& roots, double x, double tol)
+  std::mt19937_64 rng(20261201);
+  std::uniform_real_distribution<double> U11(-1., 1.);
+  int cases = 0;
+  for(int it = 0; it < 2000; ++it)
   {
-    for(double r : roots)
-      if(std::abs(r - x) <= tol)
-        return true;
-    return false;
-  };
-  // (x - 1)^2 (x + 2) = x^3 - 3x + 2
-  const std::vector<double> double_root = impl::real_roots({2., -3., 0., 1.});
-  EXPECT_TRUE(contains(double_root, 1., 1e-7));
-  EXPECT_TRUE(contains(double_root, -2., 1e-14));
-  // (x - 1e6)(x - 1e-6)(x^2 + 1): widely spread real roots, one complex pair
-  // (coefficients from degree 0: 1, -(1e6 + 1e-6), 2, -(1e6 + 1e-6), 1)
-  const std::vector<double> spread = impl::real_roots({1., -(1e6 + 1e-6), 2., -(1e6 + 1e-6), 1.});
-  EXPECT_TRUE(contains(spread, 1e6, 1e-6));
-  EXPECT_TRUE(contains(spread, 1e-6, 1e-18));
-  EXPECT_EQ(spread.size(), 2u);
-  // Identically zero and non-zero constant polynomials: no roots.
-  EXPECT_TRUE(impl::real_roots({0., 0., 0.}).empty());
-  EXPECT_TRUE(impl::real_roots({3.}).empty());
-  // Negligible leading coefficient: dropped, the remaining root is kept.
-  const std::vector<double> trimmed = impl::real_roots({-2., 1., 1e-20});
-  ASSERT_EQ(trimmed.size(), 1u);
-  EXPECT_NEAR(trimmed[0], 2., 1e-14);
+    const double b = U11(rng);
+    const Matrix2 S = {{U11(rng), b, b, U11(rng)}};
+    const Complex u0(U11(rng), U11(rng)), v0(U11(rng), U11(rng));
+    const std::pair<Complex, Complex> y = PVFi::project_onto_conjugate_pair(S, u0, v0);
+    const Complex u = y.first, v = y.second;
+    // H y = 1/2 (S v, S u), as complex numbers.
+    const Complex Sv(S[0] * v.real() + S[1] * v.imag(), S[2] * v.real() + S[3] * v.imag());
+    const Complex Su(S[0] * u.real() + S[1] * u.imag(), S[2] * u.real() + S[3] * u.imag());
+    const Complex Hy_u = 0.5 * Sv, Hy_v = 0.5 * Su;
+    const double Hy2 = std::norm(Hy_u) + std::norm(Hy_v);
+    if(Hy2 < 1e-6) // near the singular point the multiplier is ill-determined
+      continue;
+    const Complex du = u0 - u, dv = v0 - v;
+    const double lambda = (du.real() * Hy_u.real() + du.imag() * Hy_u.imag() +
+                           dv.real() * Hy_v.real() + dv.imag() * Hy_v.imag()) / Hy2;
+    // y0 - y is parallel to H y ...
+    const double misfit = std::sqrt(std::norm(du - lambda * Hy_u) + std::norm(dv - lambda * Hy_v));
+    EXPECT_LE(misfit, 1e-9 * (1. + std::sqrt(squared_norm(u0, v0)))) << "case " << it;
+    // ... with a multiplier in the positive semidefinite interval.
+    const double k1 = 0.5 * (S[0] + S[3]) + std::hypot(0.5 * (S[0] - S[3]), b);
+    const double k2 = 0.5 * (S[0] + S[3]) - std::hypot(0.5 * (S[0] - S[3]), b);
+    const double s_max = 0.5 * (std::max)(std::abs(k1), std::abs(k2));
+    EXPECT_LE(std::abs(lambda) * s_max, 1. + 1e-9) << "case " << it << ", lambda " << lambda;
+    ++cases;
+  }
+  EXPECT_GE(cases, 1500);
 }
 
 // Random shape operators of every type against brute force.

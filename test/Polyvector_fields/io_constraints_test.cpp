@@ -30,7 +30,7 @@
 #include <vector>
 
 #ifndef PVF_DATA_DIR
-#define PVF_DATA_DIR "/work/main/data"
+#error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
 #endif
 
 #include "io_test_support.h"

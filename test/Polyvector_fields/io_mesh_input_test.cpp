@@ -300,3 +300,53 @@ TEST(BoundedReading, ConstraintsById)
             PVF::Error_code::CANNOT_OPEN_FILE);
   EXPECT_EQ(message, "does not exist");
 }
+
+// The triangulation of polygon faces: a concave polygon is cut into n - 2
+// triangles of the polygon's orientation that cover exactly its area; a
+// polygon that is not simple on its plane, or whose coordinates differ by
+// 1e19 (beyond what inexact double predicates can order), is refused or cut
+// correctly, never turned into an invalid mesh.
+TEST(MeshInput, PolygonTriangulationIsExactOrRefused)
+{
+  // An L-shaped hexagon in the plane x + y + z = const (tilted), area 3 in its
+  // projection onto z = 0; the reflex vertex is vertex 3.
+  auto lifted = [](double x, double y) { return std::to_string(x) + " " + std::to_string(y) + " " +
+                                                std::to_string(0.25 * x - 0.5 * y) + "\n"; };
+  const std::string hexagon = "OFF\n6 1 0\n" + lifted(0, 0) + lifted(2, 0) + lifted(2, 1) + lifted(1, 1) +
+                              lifted(1, 2) + lifted(0, 2) + "6 0 1 2 3 4 5\n";
+  Mesh tm;
+  const Read l = read_text("l.off", hexagon, true, &tm);
+  ASSERT_EQ(l.code, PVF::Error_code::SUCCESS) << l.message;
+  EXPECT_EQ(l.report.triangulated_faces, 1u);
+  ASSERT_EQ(num_faces(tm), 4u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+  double projected_area = 0;
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    const Kernel::Point_3 &a = tm.point(source(h, tm)), &b = tm.point(target(h, tm)),
+                          &c = tm.point(target(next(h, tm), tm));
+    const double signed_area = 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+    EXPECT_GT(signed_area, 0) << "a triangle is flipped or flat";  // counterclockwise, as the polygon
+    projected_area += signed_area;
+  }
+  EXPECT_NEAR(projected_area, 3.0, 1e-12);
+
+  // Self-overlapping: the boundary folds back along a line (a "bow tie" with
+  // a spike), so no triangulation is a surface.
+  const Read bow_tie = read_text("bow_tie.off", "OFF\n4 1 0\n0 0 0\n1 1 0\n1 0 0\n0 1 0\n4 0 1 2 3\n", true);
+  EXPECT_EQ(bow_tie.code, PVF::Error_code::NON_TRIANGLE_FACE);
+  EXPECT_NE(bow_tie.message.find("face 0 (line 7)"), std::string::npos) << bow_tie.message;
+  EXPECT_NE(bow_tie.message.find("not a simple polygon"), std::string::npos) << bow_tie.message;
+  const Read spike = read_text("spike.off", "OFF\n5 1 0\n0 0 0\n2 0 0\n1 0 0\n1 1 0\n0 1 0\n5 0 1 2 3 4\n", true);
+  EXPECT_EQ(spike.code, PVF::Error_code::NON_TRIANGLE_FACE) << spike.message;
+
+  // A convex quad with coordinates near 1e19 and a side of length 1: exact
+  // predicates cut it into two triangles, but one is a sliver that no frame
+  // can be built on and that CGAL's removal of degenerate faces (exact
+  // collinearity) leaves in place: refused, with the face named, rather than
+  // a mesh returned that cannot carry a field.
+  const Read big = read_text("huge.off", "OFF\n4 1 0\n1e19 0 0\n1e19 1 0\n0 1e19 0\n0 0 0\n4 0 1 2 3\n", true);
+  EXPECT_EQ(big.code, PVF::Error_code::DEGENERATE_FACE);
+  EXPECT_NE(big.message.find("face 0 (line 7)"), std::string::npos) << big.message;
+}

@@ -21,7 +21,7 @@
 #include <string>
 
 #ifndef PVF_DATA_DIR
-#define PVF_DATA_DIR "/work/main/data"
+#error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
 #endif
 
 namespace pvf_io_test {

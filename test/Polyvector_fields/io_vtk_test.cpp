@@ -33,7 +33,7 @@
 #include <vector>
 
 #ifndef PVF_DATA_DIR
-#define PVF_DATA_DIR "/work/main/data"
+#error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
 #endif
 
 #include "io_test_support.h"
@@ -248,7 +248,7 @@ TYPED_TEST(Vtk_test, ParsesBackOnBumpy)
 
   Scratch_directory dir("vtk");
   const std::string filename = dir.file("bumpy.vtk");
-  ASSERT_EQ(PIO::write_vtk(filename, tm, roots, N, singularities, scalars, constrained), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_vtk(filename, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(constrained))), Error_code::SUCCESS);
   EXPECT_EQ(dir.entries(), std::set<std::string>{ "bumpy.vtk" });
   const std::string text = file_content(filename);
 
@@ -340,12 +340,12 @@ TYPED_TEST(Vtk_test, ParsesBackOnBumpy)
 
   // The flag overload and the stream overload write the same text.
   std::ostringstream os;
-  ASSERT_EQ(PIO::write_vtk(os, tm, roots, N, singularities, scalars, flags), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_vtk(os, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars, PVF::parameters::is_constrained(flags))), Error_code::SUCCESS);
   EXPECT_EQ(os.str(), text);
 
   // Without constraints, without extra arrays.
   std::ostringstream no_constraints, bare;
-  ASSERT_EQ(PIO::write_vtk(no_constraints, tm, roots, N, singularities, scalars), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_vtk(no_constraints, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars)), Error_code::SUCCESS);
   ASSERT_EQ(PIO::write_vtk(bare, tm, roots, N, std::vector<Singularity>()), Error_code::SUCCESS);
   Vtk_file a, b;
   ASSERT_EQ(parse_vtk(no_constraints.str(), a), "");
@@ -415,16 +415,16 @@ TEST(Vtk, BadInputWritesNothing)
   auto expect_failure = [&](Error_code expected, std::size_t N, const std::vector<Singularity>& s,
                             const PIO::Face_scalar_arrays& scalars, const std::vector<face_descriptor>& c) {
     std::ostringstream os;
-    EXPECT_EQ(PIO::write_vtk(os, tm, roots, N, s, scalars, c), expected);
+    EXPECT_EQ(PIO::write_vtk(os, tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
     EXPECT_TRUE(os.str().empty());
-    EXPECT_EQ(PIO::write_vtk(existing, tm, roots, N, s, scalars, c), expected);
-    EXPECT_EQ(PIO::write_vtk(dir.file("new.vtk"), tm, roots, N, s, scalars, c), expected);
+    EXPECT_EQ(PIO::write_vtk(existing, tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
+    EXPECT_EQ(PIO::write_vtk(dir.file("new.vtk"), tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
     EXPECT_EQ(file_content(existing), "old\n");
     EXPECT_EQ(dir.entries(), std::set<std::string>{ "old.vtk" });
   };
   {
     std::ostringstream os;
-    ASSERT_EQ(PIO::write_vtk(os, tm, roots, 2, sings, good, constrained), Error_code::SUCCESS);
+    ASSERT_EQ(PIO::write_vtk(os, tm, roots, 2, sings, PVF::parameters::face_scalars(good, PVF::parameters::constrained_faces(constrained))), Error_code::SUCCESS);
   }
   expect_failure(Error_code::INVALID_DEGREE, 0, sings, good, constrained);
   expect_failure(Error_code::INCONSISTENT_DEGREE, 3, sings, good, constrained);
@@ -454,7 +454,8 @@ TEST(Vtk, BadInputWritesNothing)
 
   // A flag vector of the wrong size.
   std::ostringstream os;
-  EXPECT_EQ(PIO::write_vtk(os, tm, roots, 2, sings, good, std::vector<bool>(F + 1, false)),
+  const std::vector<bool> wrong_size(F + 1, false);
+  EXPECT_EQ(PIO::write_vtk(os, tm, roots, 2, sings, PVF::parameters::face_scalars(good, PVF::parameters::is_constrained(wrong_size))),
             Error_code::INVALID_PARAMETER);
   EXPECT_TRUE(os.str().empty());
   // No directory, unwritable stream.

@@ -15,7 +15,8 @@
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
-#include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
+#include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
+#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -25,6 +26,10 @@
 #include <Eigen/Dense>
 
 #include <gtest/gtest.h>
+
+#if defined(__unix__) || defined(__APPLE__)
+#  include <dlfcn.h>
+#endif
 
 #include <cmath>
 #include <complex>
@@ -234,11 +239,11 @@ TEST(SolverAgreement, CholmodAngleBoundMatchesSimplicialLDLT)
   const auto constraints = constraints_for(tm, 4, true, 12);
   std::map<face_descriptor, std::vector<Complex> > a, b;
   PVF::Angle_bound_result ra, rb;
-  ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, 4, constraints, boost::make_assoc_property_map(a), ra,
+  ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, constraints, boost::make_assoc_property_map(a), ra,
                                                   CGAL::parameters::sparse_linear_solver(PVF::Simplicial_ldlt_solver())),
             PVF::Error_code::SUCCESS);
   ASSERT_EQ(PVF::design_angle_bounded_frame_field(
-              tm, 4, constraints, boost::make_assoc_property_map(b), rb,
+              tm, constraints, boost::make_assoc_property_map(b), rb,
               CGAL::parameters::sparse_linear_solver(PVF::Cholmod_sparse_solver())),
             PVF::Error_code::SUCCESS);
   EXPECT_GT(ra.iterations, 0u);
@@ -262,30 +267,54 @@ template <typename Solver>
 void check_refactor_matches_fresh_factorization(const char* name)
 {
   SCOPED_TRACE(name);
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  typedef PVF::internal::Coefficient_system<Bundle, Solver> System;
   const Mesh tm = closed_mesh();
-  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver> designer(
-    tm, 4, PVF::parameters::sign_symmetric(true));
-  ASSERT_EQ(designer.add_constraints(constraints_for(tm, 4, true, 12)), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
-  const auto& connection = designer.connection();
-  const std::size_t F = connection.number_of_faces();
-  typedef PVF::internal::Frame_field_iterations<std::remove_reference_t<decltype(connection)>, Solver> Iterations;
-  // Targets: the smooth field rotated by a face-dependent angle.
-  std::vector<Complex> targets = designer.coefficient_array();
+  const Bundle bundle(tm);
+  const std::size_t F = bundle.number_of_faces();
+  PVF::internal::Specifications specifications;
+  for(const auto& c : constraints_for(tm, 4, true, 12))
+  {
+    PVF::internal::Face_specification s;
+    ASSERT_EQ(PVF::internal::make_face_specification(bundle.frame(bundle.index(c.face)), c.vectors, c.weight, 4, true, s),
+              PVF::Error_code::SUCCESS);
+    specifications[bundle.index(c.face)] = s;
+  }
+  // The smooth field, then targets: the smooth field rotated by a face-dependent angle.
+  System smooth(bundle, 4, { 0, 2 }, Solver());
+  smooth.specifications() = specifications;
+  std::vector<Complex> targets;
+  ASSERT_TRUE(smooth.factor() && smooth.solve(targets));
   for(std::size_t f = 0; f < F; ++f)
   {
     targets[4 * f] *= std::polar(1.0, 0.3 * std::sin(double(f)));
     targets[4 * f + 2] *= std::polar(1.0, -0.2 * std::cos(double(f)));
   }
-  std::vector<double> scale(F);
-  for(std::size_t f = 0; f < F; ++f)
-    scale[f] = 0.5 + 0.5 * std::abs(std::sin(0.7 * double(f)));
-  Iterations refactored(connection, designer.specifications(), Solver(), scale, 0.25);
+  // Data weights lambda s_f, plus 0.25 on c_2 (an orthogonality term).
+  auto set_weights = [&](System& system, double lambda) {
+    PVF::internal::Data_term& data = system.data_term();
+    data.weight.assign(2, std::vector<double>(F));
+    data.target.assign(2, std::vector<Complex>(F));
+    for(std::size_t f = 0; f < F; ++f)
+    {
+      const double s_f = 0.5 + 0.5 * std::abs(std::sin(0.7 * double(f)));
+      data.weight[0][f] = lambda * s_f;
+      data.weight[1][f] = lambda * s_f + 0.25;
+      data.target[0][f] = targets[4 * f];
+      data.target[1][f] = targets[4 * f + 2] * (lambda * s_f / (lambda * s_f + 0.25));
+    }
+  };
+  System refactored(bundle, 4, { 0, 2 }, Solver());
+  refactored.specifications() = specifications;
   std::vector<Complex> first, second, fresh;
-  ASSERT_TRUE(refactored.global_step(3.0, targets, first));
-  ASSERT_TRUE(refactored.global_step(40.0, targets, second));  // refactor_numeric()
-  Iterations from_scratch(connection, designer.specifications(), Solver(), scale, 0.25);
-  ASSERT_TRUE(from_scratch.global_step(40.0, targets, fresh));  // factor()
+  set_weights(refactored, 3.0);
+  ASSERT_TRUE(refactored.factor() && refactored.solve(first));
+  set_weights(refactored, 40.0);
+  ASSERT_TRUE(refactored.refactor() && refactored.solve(second));
+  System from_scratch(bundle, 4, { 0, 2 }, Solver());
+  from_scratch.specifications() = specifications;
+  set_weights(from_scratch, 40.0);
+  ASSERT_TRUE(from_scratch.factor() && from_scratch.solve(fresh));
   EXPECT_LT(relative_difference(fresh, second), 1e-12);
   EXPECT_GT(relative_difference(first, second), 1e-3);  // the weights did change the field
 }
@@ -299,14 +328,19 @@ TEST(SolverAgreement, RefactorWithNewWeightsMatchesFreshFactorization)
   check_refactor_matches_fresh_factorization<Dense_LDLT_traits>("dense");
 }
 
-// The default is CHOLMOD exactly when the build found it (CGAL_PVF_HAS_CHOLMOD,
-// set by the CMake target), and Eigen's SimplicialLDLT otherwise.
-TEST(SolverAgreement, DefaultSolverIsCholmodWhenFound)
+// The default is CHOLMOD exactly when the program is linked with CHOLMOD
+// (asked of the dynamic linker, not of the macros that chose the default),
+// and Eigen's SimplicialLDLT otherwise.
+TEST(SolverAgreement, DefaultSolverIsCholmodWhenLinked)
 {
-#ifdef CGAL_PVF_HAS_CHOLMOD
-  EXPECT_TRUE((std::is_same<PVF::Default_sparse_solver, PVF::Cholmod_sparse_solver>::value));
+#if defined(__unix__) || defined(__APPLE__)
+  const bool linked = dlsym(RTLD_DEFAULT, "cholmod_analyze") != nullptr;
+  EXPECT_EQ((std::is_same<PVF::Default_sparse_solver, PVF::Simplicial_ldlt_solver>::value), !linked);
+#  ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+  EXPECT_EQ((std::is_same<PVF::Default_sparse_solver, PVF::Cholmod_sparse_solver>::value), linked);
+#  endif
 #else
-  EXPECT_TRUE((std::is_same<PVF::Default_sparse_solver, PVF::Simplicial_ldlt_solver>::value));
+  GTEST_SKIP() << "no dlsym";
 #endif
 }
 

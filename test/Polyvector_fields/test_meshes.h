@@ -31,7 +31,7 @@
 #include <vector>
 
 #ifndef PVF_DATA_DIR
-#define PVF_DATA_DIR "/work/main/data"
+#error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
 #endif
 
 namespace pvf_test {
@@ -82,29 +82,96 @@ TriangleMesh grid(int rows, int cols)
   return tm;
 }
 
-// A torus of radii R > r, n x m quads split into triangles (closed, genus 1).
-inline Mesh torus(int n, int m, double R = 2, double r = 0.7)
+// A polygon soup: the parametric surfaces of the tests are made as soups, then
+// turned into any mesh type with make_mesh().
+template <typename Point_type = Point>
+struct Soup
 {
-  std::vector<Point> points;
-  std::vector<std::array<std::size_t, 3> > triangles;
-  const double pi = 3.14159265358979323846;
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < m; ++j)
-    {
-      const double a = 2 * pi * i / n, b = 2 * pi * j / m;
-      points.emplace_back((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
-    }
-  auto id = [n, m](int i, int j) { return std::size_t(((i + n) % n) * m + (j + m) % m); };
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < m; ++j)
-    {
-      triangles.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
-      triangles.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
-    }
-  Mesh tm;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tm);
+  std::vector<Point_type> points;
+  std::vector<std::vector<std::size_t> > faces;
+
+  void add_quad(std::size_t a, std::size_t b, std::size_t c, std::size_t d)
+  {
+    faces.push_back({ a, b, c });
+    faces.push_back({ a, c, d });
+  }
+};
+
+template <typename TriangleMesh, typename Point_type>
+TriangleMesh make_mesh(const Soup<Point_type>& s)
+{
+  TriangleMesh tm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(s.points, s.faces, tm);
   return tm;
 }
+
+constexpr double pi = 3.14159265358979323846;
+
+// Latitude-longitude sphere of radius R, normals outward; nu meridians, nv bands.
+template <typename Point_type = Point>
+Soup<Point_type> sphere_soup(double R, int nu, int nv)
+{
+  Soup<Point_type> s;
+  s.points.push_back(Point_type(0, 0, -R));
+  for(int j = 1; j < nv; ++j)
+    for(int i = 0; i < nu; ++i)
+    {
+      const double theta = pi * j / nv, phi = 2 * pi * i / nu;
+      s.points.push_back(Point_type(R * std::sin(theta) * std::cos(phi), R * std::sin(theta) * std::sin(phi),
+                                    -R * std::cos(theta)));
+    }
+  const std::size_t north = s.points.size();
+  s.points.push_back(Point_type(0, 0, R));
+  auto id = [nu](int i, int j) { return std::size_t(1 + (j - 1) * nu + (i % nu)); };
+  for(int i = 0; i < nu; ++i)
+    s.faces.push_back({ 0, id(i + 1, 1), id(i, 1) });
+  for(int j = 1; j < nv - 1; ++j)
+    for(int i = 0; i < nu; ++i)
+      s.add_quad(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  for(int i = 0; i < nu; ++i)
+    s.faces.push_back({ id(i, nv - 1), id(i + 1, nv - 1), north });
+  return s;
+}
+
+// Open cylinder x^2 + y^2 = R^2, 0 <= z <= H, normals outward.
+template <typename Point_type = Point>
+Soup<Point_type> cylinder_soup(double R, double H, int nu, int nz)
+{
+  Soup<Point_type> s;
+  for(int j = 0; j <= nz; ++j)
+    for(int i = 0; i < nu; ++i)
+    {
+      const double phi = 2 * pi * i / nu;
+      s.points.push_back(Point_type(R * std::cos(phi), R * std::sin(phi), H * j / nz));
+    }
+  auto id = [nu](int i, int j) { return std::size_t(j * nu + (i % nu)); };
+  for(int j = 0; j < nz; ++j)
+    for(int i = 0; i < nu; ++i)
+      s.add_quad(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return s;
+}
+
+// Torus of radii R (axis to tube centre) > r (tube), nu x nv quads split into
+// triangles, normals outward (closed, genus 1).
+template <typename Point_type = Point>
+Soup<Point_type> torus_soup(double R, double r, int nu, int nv)
+{
+  Soup<Point_type> s;
+  for(int j = 0; j < nv; ++j)
+    for(int i = 0; i < nu; ++i)
+    {
+      const double u = 2 * pi * i / nu, v = 2 * pi * j / nv;
+      s.points.push_back(Point_type((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)));
+    }
+  auto id = [nu, nv](int i, int j) { return std::size_t((j % nv) * nu + (i % nu)); };
+  for(int j = 0; j < nv; ++j)
+    for(int i = 0; i < nu; ++i)
+      s.add_quad(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return s;
+}
+
+// A torus of radii R > r with n x m quads split into triangles, as a Surface_mesh.
+inline Mesh torus(int n, int m, double R = 2, double r = 0.7) { return make_mesh<Mesh>(torus_soup(R, r, n, m)); }
 
 // An icosahedron refined `levels` times by Loop subdivision, projected onto the unit sphere.
 inline Mesh sphere(int levels)

@@ -43,7 +43,7 @@ enum class Error_code
   UNSUPPORTED_FORMAT,            ///< a file's format (its extension or header) is not one that the reader knows
   DUPLICATE_FACE,                ///< two faces of a mesh file have the same vertices
   NON_MANIFOLD_MESH,             ///< a mesh has an edge shared by more than two faces, a vertex whose faces do not form a fan, or faces that cannot be oriented consistently
-  VALUE_OUT_OF_RANGE             ///< a value is finite but too large or too small for the computation: a constraint vector of length `L` needs `1e-100 <= L^N <= 1e100`
+  VALUE_OUT_OF_RANGE             ///< a value is finite but too large or too small for the computation: a constraint vector of length `L` needs `1e-300 <= L^N <= 1e300`, and `1e-100 <= (L / sigma)^N <= 1e100` for the mean length `sigma` of all constraint vectors
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -76,7 +76,7 @@ inline const char* get_error_message(Error_code code)
     case Error_code::UNSUPPORTED_FORMAT: return "the file format is not supported";
     case Error_code::DUPLICATE_FACE: return "the mesh has two faces with the same vertices";
     case Error_code::NON_MANIFOLD_MESH: return "the mesh is not a manifold surface (an edge with more than two faces, a pinched vertex, or inconsistent orientations)";
-    case Error_code::VALUE_OUT_OF_RANGE: return "a constraint vector is too long or too short for the degree N (its length L needs 1e-100 <= L^N <= 1e100)";
+    case Error_code::VALUE_OUT_OF_RANGE: return "a constraint vector is too long or too short for the degree N (its length L needs 1e-300 <= L^N <= 1e300, and within 1e-100 <= (L / sigma)^N <= 1e100 of the mean length sigma of all constraint vectors)";
   }
   return "unknown error";
 }

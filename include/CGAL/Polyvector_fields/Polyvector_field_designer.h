@@ -10,24 +10,22 @@
 
 /// \file Polyvector_field_designer.h
 
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
-#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
-#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Default.h>
-#include <CGAL/tags.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
-#include <chrono>
 #include <complex>
-#include <map>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <vector>
@@ -40,7 +38,7 @@ namespace Polyvector_fields {
 /// times of the stages of the last `Polyvector_field_designer::solve()`, in seconds.
 struct Design_statistics
 {
-  double connection = 0;      ///< face frames and Levi-Civita connection (at construction)
+  double connection = 0;      ///< face frames and Levi-Civita connection (at construction; 0 when a bundle was given)
   double assembly = 0;        ///< assembly of the sparse matrices
   double factorization = 0;   ///< symbolic analysis and numeric factorization
   double solve = 0;           ///< triangular solves
@@ -55,8 +53,8 @@ struct Design_statistics
 /// that new constraint values on the same faces are solved for without
 /// factoring again.
 ///
-/// The field minimises the smoothness energy of Eq. 6 (with the transport power
-/// `N - m` of NOTES §1) under the constraints:
+/// The field minimises the smoothness energy of Eq. 6, with the transport
+/// power `N - m` of the user manual's section "Smoothness", under the constraints:
 /// - a *hard full* constraint fixes all the coefficients of its face;
 /// - a *hard partial* constraint (fewer than `N` vectors) makes each given vector a root;
 /// - a *soft* constraint adds its weighted squared residual to the energy (see `Face_constraint`).
@@ -72,6 +70,7 @@ struct Design_statistics
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam Traits a model of `Kernel`; `CGAL::Default` means the kernel of the point type
+///         (only its type `Vector_3` is used: the type of the constraint vectors)
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
 ///         `CGAL::Default` means the internal point map of the mesh
 /// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`;
@@ -107,24 +106,15 @@ public:
   typedef typename Geom_traits::Vector_3 Vector_3;  ///< the vector type of the constraints
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;  ///< the face type of `TriangleMesh`
   typedef Face_constraint<face_descriptor, Vector_3> Constraint;  ///< the constraint type accepted by `add_constraint()`
-  typedef Levi_civita_connection<TriangleMesh, Vertex_point_map> Connection;  ///< the connection type returned by `connection()`
+  typedef Tangent_bundle<TriangleMesh, Vertex_point_map> Bundle;  ///< the tangent bundle type returned by `tangent_bundle()`
   typedef std::complex<double> Complex;  ///< the complex number type of the coefficients
   /// @}
 
   /// builds the face frames and the connection of `tm` for fields of degree `N`.
   ///
   /// \cgalNamedParamsBegin
-  ///   \cgalParamNBegin{vertex_point_map}
-  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-  ///     \cgalParamType{`Vertex_point_map`}
-  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{sign_symmetric}
-  ///     \cgalParamDescription{whether the field is made of pairs `{u, -u}` (frame fields, N-RoSy fields of even N);
-  ///                           given with `Polyvector_fields::parameters::sign_symmetric()`}
-  ///     \cgalParamType{`bool`}
-  ///     \cgalParamDefault{`false`}
-  ///   \cgalParamNEnd
+  ///   \pvfParamVertexPointMap
+  ///   \pvfParamSignSymmetric
   ///   \cgalParamNBegin{sparse_linear_solver}
   ///     \cgalParamDescription{a prototype of the solver; each factorization uses its own copy}
   ///     \cgalParamType{`Solver_traits`}
@@ -136,21 +126,27 @@ public:
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   Polyvector_field_designer(const TriangleMesh& tm, std::size_t N,
                             const NamedParameters& np = CGAL::parameters::default_values())
-    : m_N(N),
-      m_sign_symmetric(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, internal_np::sign_symmetric), false)),
-      m_solver_prototype(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver_traits()))
+    : Polyvector_field_designer(N, np)
   {
-    const auto start = std::chrono::steady_clock::now();
-    m_connection.reset(new Connection(
+    const internal::Timer timer;
+    m_own_bundle.reset(new Bundle(
       tm, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                              CGAL::get_const_property_map(CGAL::vertex_point, tm))));
-    m_statistics.connection = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if(N == 0 || (m_sign_symmetric && N % 2 != 0))
-      m_status = Error_code::INVALID_DEGREE;
-    else
-      m_status = m_connection->status();
+    m_bundle = m_own_bundle.get();
+    m_statistics.connection = timer.elapsed();
+    check_status();
+  }
+
+  /// designs fields of degree `N` on the tangent bundle `bundle`, which must
+  /// outlive the designer; the named parameters are those of the other
+  /// constructor but `vertex_point_map` (the bundle's is used).
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  Polyvector_field_designer(const Bundle& bundle, std::size_t N,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+    : Polyvector_field_designer(N, np)
+  {
+    m_bundle = &bundle;
+    check_status();
   }
 
   /// returns `Error_code::SUCCESS` when the mesh and the degree are valid, the reason otherwise
@@ -163,26 +159,27 @@ public:
   /// returns whether the field is sign-symmetric.
   bool is_sign_symmetric() const { return m_sign_symmetric; }
 
-  /// returns the face frames and connection.
-  const Connection& connection() const { return *m_connection; }
+  /// returns the tangent bundle: face frames, numbering and connection.
+  const Bundle& tangent_bundle() const { return *m_bundle; }
 
   /// \name Constraints
   /// @{
 
   /// adds a constraint. On failure nothing is added and the error is returned:
   /// `INVALID_FACE`, `DUPLICATE_CONSTRAINT`, `EMPTY_CONSTRAINT`, `TOO_MANY_CONSTRAINT_VECTORS`,
-  /// `ZERO_CONSTRAINT_VECTOR`, `NON_FINITE_VALUE`, `INVALID_WEIGHT`, or the `status()` of an invalid designer.
+  /// `ZERO_CONSTRAINT_VECTOR`, `NON_FINITE_VALUE`, `VALUE_OUT_OF_RANGE`, `INVALID_WEIGHT`, or the
+  /// `status()` of an invalid designer.
   Error_code add_constraint(const Constraint& constraint)
   {
     if(m_status != Error_code::SUCCESS)
       return m_status;
-    if(!m_connection->contains(constraint.face))
+    if(!m_bundle->contains(constraint.face))
       return Error_code::INVALID_FACE;
-    const std::size_t f = m_connection->index(constraint.face);
+    const std::size_t f = m_bundle->index(constraint.face);
     if(m_specifications.count(f))
       return Error_code::DUPLICATE_CONSTRAINT;
     internal::Face_specification specification;
-    const Error_code code = internal::make_face_specification(m_connection->frame(f), constraint.vectors, constraint.weight,
+    const Error_code code = internal::make_face_specification(m_bundle->frame(f), constraint.vectors, constraint.weight,
                                                               m_N, m_sign_symmetric, specification);
     if(code == Error_code::SUCCESS)
       m_specifications.emplace(f, std::move(specification));
@@ -201,7 +198,7 @@ public:
   template <typename ConstraintRange>
   Error_code add_constraints(const ConstraintRange& constraints)
   {
-    const std::map<std::size_t, internal::Face_specification> saved = m_specifications;
+    const internal::Specifications saved = m_specifications;
     for(const Constraint& c : constraints)
     {
       const Error_code code = add_constraint(c);
@@ -229,88 +226,72 @@ public:
   ///         and `std::vector<std::complex<double>>` as value type: the `N` coefficients
   ///         `c_0 .. c_{N-1}` of the monic polynomial of each face, in the face frame.
   ///
-  /// \returns `Error_code::SUCCESS`, `status()` if the designer is invalid, or `SOLVER_FAILURE`.
-  ///          On failure `coefficients` is not written.
+  /// \returns `Error_code::SUCCESS`, `status()` if the designer is invalid, `VALUE_OUT_OF_RANGE` if the
+  ///          lengths of the constraint vectors are too far apart (see the user manual, "Supported range"),
+  ///          or `SOLVER_FAILURE`. On failure `coefficients` is not written.
   template <typename CoefficientMap>
   Error_code solve(CoefficientMap coefficients)
   {
     const Error_code code = compute();
     if(code != Error_code::SUCCESS)
       return code;
-    internal::write_coefficients(*m_connection, m_N, m_solution, coefficients);
+    internal::write_coefficients(*m_bundle, m_N, m_solution, coefficients);
     return Error_code::SUCCESS;
   }
 
   /// returns the coefficients of the last successful `solve()`: `N` per face,
-  /// face after face in the order of `connection().index()`.
+  /// face after face in the order of the tangent bundle's face numbering.
   const std::vector<Complex>& coefficient_array() const { return m_solution; }
 
   /// returns the times and facts of the last `solve()`.
   const Design_statistics& statistics() const { return m_statistics; }
 
-  /// \cond SKIP_IN_MANUAL
-  // For the frame-field iterations: the validated constraints, in face frames.
-  const std::map<std::size_t, internal::Face_specification>& specifications() const { return m_specifications; }
-  const Solver_traits& solver_prototype() const { return m_solver_prototype; }
-  /// \endcond
-
 private:
-  typedef internal::Coefficient_system<Connection, Solver_traits> System;
+  typedef internal::Coefficient_system<Bundle, Solver_traits> System;
 
-  // The degrees that are not identically zero under the current constraints.
-  std::vector<int> active_degrees() const
-  {
-    const std::vector<int> admissible = internal::admissible_degrees(m_N, m_sign_symmetric);
-    std::vector<char> used(m_N, 0);
-    for(const auto& entry : m_specifications)
-    {
-      if(!entry.second.full)
-        return admissible;  // P(u) = 0 involves every degree
-      for(int m : admissible)
-        if(entry.second.values[std::size_t(m)] != Complex(0))
-          used[std::size_t(m)] = 1;
-    }
-    std::vector<int> degrees;
-    for(int m : admissible)
-      if(used[std::size_t(m)])
-        degrees.push_back(m);
-    return degrees;
-  }
+  template <typename NamedParameters>
+  Polyvector_field_designer(std::size_t N, const NamedParameters& np)
+    : m_N(N),
+      m_sign_symmetric(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np::sign_symmetric), false)),
+      m_solver_prototype(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver_traits()))
+  {}
 
-  // What the matrices depend on: faces, kinds, weights, partial rows.
-  bool same_structure(const std::map<std::size_t, internal::Face_specification>& a,
-                      const std::map<std::size_t, internal::Face_specification>& b) const
+  void check_status()
   {
-    if(a.size() != b.size())
-      return false;
-    for(auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j)
-    {
-      if(i->first != j->first || i->second.full != j->second.full || i->second.weight != j->second.weight)
-        return false;
-      if(!i->second.full && (i->second.rows != j->second.rows || i->second.rhs != j->second.rhs))
-        return false;
-    }
-    return true;
+    if(m_N == 0 || (m_sign_symmetric && m_N % 2 != 0))
+      m_status = Error_code::INVALID_DEGREE;
+    else
+      m_status = m_bundle->status();
   }
 
   Error_code compute()
   {
     if(m_status != Error_code::SUCCESS)
       return m_status;
-    const std::vector<int> degrees = active_degrees();
+    const std::vector<int> degrees = internal::active_degrees(m_specifications, m_N, m_sign_symmetric);
+    const int k = internal::length_exponent(m_specifications);
+    if(!internal::lengths_in_range(m_specifications, k, m_N))
+      return Error_code::VALUE_OUT_OF_RANGE;
+    bool partial = false;
+    for(const auto& entry : m_specifications)
+      partial = partial || !entry.second.full;
     m_statistics.factorization_reused = false;
     m_statistics.assembly = m_statistics.factorization = m_statistics.solve = 0;
     m_statistics.number_of_degrees_solved = degrees.size();
-    if(m_system && m_system_degrees == degrees && same_structure(m_system->specifications(), m_specifications))
+    if(m_system && m_system->degrees() == degrees && internal::same_matrices(m_system->specifications(), m_specifications) &&
+       (!partial || m_system->length_exponent() == k))
     {
       m_system->specifications() = m_specifications;
+      m_system->set_length_exponent(k);
       m_statistics.factorization_reused = true;
     }
     else
     {
-      m_system.reset(new System(*m_connection, m_N, degrees, m_solver_prototype, parallel));
-      m_system_degrees = degrees;
+      m_system.reset(new System(*m_bundle, m_N, degrees, m_solver_prototype, parallel));
       m_system->specifications() = m_specifications;
+      m_system->set_length_exponent(k);
       if(!m_system->factor())
       {
         m_system.reset();
@@ -333,11 +314,11 @@ private:
   std::size_t m_N;
   bool m_sign_symmetric;
   Solver_traits m_solver_prototype;
-  std::unique_ptr<Connection> m_connection;
+  std::unique_ptr<const Bundle> m_own_bundle;
+  const Bundle* m_bundle = nullptr;
   Error_code m_status = Error_code::SUCCESS;
-  std::map<std::size_t, internal::Face_specification> m_specifications;
+  internal::Specifications m_specifications;
   std::unique_ptr<System> m_system;
-  std::vector<int> m_system_degrees;
   std::vector<Complex> m_solution;
   Design_statistics m_statistics;
 };

@@ -11,10 +11,13 @@
 /// \file angle_bounded_frame_field.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
+#include <CGAL/Polyvector_fields/internal/Local_global_driver.h>
 #include <CGAL/Polyvector_fields/internal/angle_bound_projection.h>
-#include <CGAL/Polyvector_fields/internal/field_access.h>
-#include <CGAL/Polyvector_fields/internal/frame_field_setup.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 #include <cmath>
 #include <iostream>
@@ -37,8 +40,9 @@ struct Angle_bound_result
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
-/// designs a smooth frame field `{±u, ±v}` whose angle between `u` and `v`
-/// is at least a bound `theta_min` in every face (paper, Section 4.2).
+/// designs, on a tangent bundle, a smooth frame field `{±u, ±v}` whose angle
+/// between `u` and `v` is at least a bound `theta_min` in every face (paper,
+/// Section 4.2).
 ///
 /// Starting from the smoothest frame field that satisfies `constraints`, the
 /// algorithm alternates a local step, which turns `u` and `v` of every face
@@ -50,16 +54,11 @@ struct Angle_bound_result
 /// within the bound, up to `tolerance`, or after `number_of_iterations` steps.
 /// Faces fixed by a hard full constraint are not changed, even if the
 /// constraint itself is below the bound (see `Angle_bound_result::minimum_angle`).
+/// The user manual's section "Angle-bounded frame fields" states the local step.
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
-///         the two degrees of each global step are factored and solved in parallel with TBB (unless a constraint
-///         gives a single vector, which couples the degrees into one system); the result does not depend on it
-/// \tparam TriangleMesh a model of `FaceListGraph`
-/// \tparam ConstraintRange a range of `Face_constraint<face_descriptor, Vector_3>` (at most 2 vectors each)
-/// \tparam CoefficientMap a model of `WritablePropertyMap` from faces to `std::vector<std::complex<double>>`
+/// \pvfFrameFieldTparams
 ///
-/// \param tm the mesh
-/// \param N the degree, which must be 4
+/// \param mesh_or_bundle the tangent bundle of the mesh, or the mesh
 /// \param constraints the constraints; each vector `u` stands for the pair `{u, -u}`
 /// \param coefficient_map receives the 4 coefficients of each face
 /// \param result receives the number of iterations and the angles reached
@@ -72,59 +71,27 @@ struct Angle_bound_result
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{70 degrees}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{initial_lambda}
-///     \cgalParamDescription{the first weight `lambda` of the global step, `> 0`}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{100}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{lambda_factor}
-///     \cgalParamDescription{the factor of `lambda` at each iteration, `>= 1`}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{1.5}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{tolerance}
 ///     \cgalParamDescription{how far below the bound, in radians, a face may stay at convergence, `>= 0`}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1e-7}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the maximum number of global steps}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{200}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{verbose}
-///     \cgalParamDescription{print the progress of each iteration on `std::cerr`}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, model of `Kernel`}
-///     \cgalParamDefault{the kernel of the point type}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{sparse_linear_solver}
-///     \cgalParamDescription{a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`}
-///     \cgalParamDefault{`Default_sparse_solver`}
-///   \cgalParamNEnd
+///   \pvfLocalGlobalParams{200}
 /// \cgalNamedParamsEnd
 ///
 /// \returns `SUCCESS` (also when the iterations did not converge: see `result.converged`),
-///          `NOT_A_FRAME_FIELD` if `N != 4` or `sign_symmetric(false)` is given, `INVALID_PARAMETER`
-///          or `NON_FINITE_VALUE` for a bad parameter, or an error of `design_polyvector_field()`.
-///          On failure `coefficient_map` is not written.
+///          `INVALID_PARAMETER` or `NON_FINITE_VALUE` for a bad parameter, or an error of
+///          `Polyvector_field_designer::add_constraint()` and `Polyvector_field_designer::solve()`.
+///          On failure `coefficient_map` and `result` are not written.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
-          typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
+          typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t N, const ConstraintRange& constraints,
+Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle, const ConstraintRange& constraints,
                                             CoefficientMap coefficient_map, Angle_bound_result& result,
                                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef std::complex<double> Complex;
 
   const double theta_min = choose_parameter(get_parameter(np, internal_np::angle_bound), 70.0 * CGAL_PI / 180.0);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 1e-7);
@@ -137,58 +104,46 @@ Error_code design_angle_bounded_frame_field(const TriangleMesh& tm, std::size_t 
   if(!(theta_min > 0) || theta_min > CGAL_PI / 2 || !(tolerance >= 0))
     return Error_code::INVALID_PARAMETER;
 
-  typedef internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag> Types;
-  std::unique_ptr<typename Types::Designer> designer;
-  code = internal::smooth_frame_field<ConcurrencyTag>(tm, N, constraints, np, designer);
-  if(code != Error_code::SUCCESS)
-    return code;
-  const auto& connection = designer->connection();
-  const std::size_t F = connection.number_of_faces();
-  std::vector<Complex> c = designer->coefficient_array(), targets(4 * F);
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
+  auto driver = internal::make_local_global_driver<ConcurrencyTag>(bundle, np);
 
-  typename Types::Iterations iterations = Types::iterations(*designer, std::vector<double>(F, 1.0), 0.0);
-
-  // Smallest frame angle over the faces that are not fixed, and over all faces.
-  auto smallest_angles = [&](double& free_faces, double& all_faces) {
-    free_faces = all_faces = std::numeric_limits<double>::infinity();
-    for(std::size_t f = 0; f < F; ++f)
-    {
-      const auto uv = internal::frame_vectors(&c[4 * f]);
-      const double a = internal::smallest_frame_angle(uv.first, uv.second);
-      all_faces = (std::min)(all_faces, a);
-      if(!iterations.is_fixed(f))
-        free_faces = (std::min)(free_faces, a);
-    }
-  };
-
+  // The measure: the smallest frame angle over the free faces, and over all faces.
   Angle_bound_result r;
-  double lambda = p.initial_lambda, free_angle, all_angle;
-  smallest_angles(free_angle, all_angle);
-  while(!(free_angle >= theta_min - tolerance) && r.iterations < p.maximum_iterations)
-  {
-    // Local step.
-    for(std::size_t f = 0; f < F; ++f)
+  auto converged = [&](const std::vector<std::complex<double> >& field, std::size_t iteration, double lambda) {
+    r.minimum_free_angle = r.minimum_angle = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
     {
-      const auto uv = internal::frame_vectors(&c[4 * f]);
-      const auto bounded = iterations.is_fixed(f) ? uv : internal::enforce_angle_bound(uv.first, uv.second, theta_min);
-      internal::frame_coefficients(bounded.first, bounded.second, &targets[4 * f]);
+      const auto uv = internal::frame_vectors(&field[4 * f]);
+      const double a = internal::smallest_frame_angle(uv.first, uv.second);
+      r.minimum_angle = (std::min)(r.minimum_angle, a);
+      if(!driver.is_fixed(f))
+        r.minimum_free_angle = (std::min)(r.minimum_free_angle, a);
     }
-    // Global step.
-    if(!iterations.global_step(lambda, targets, c))
-      return Error_code::SOLVER_FAILURE;
-    ++r.iterations;
-    smallest_angles(free_angle, all_angle);
-    if(p.verbose)
-      std::cerr << "angle bound: iteration " << r.iterations << ", lambda " << lambda << ", smallest angle "
-                << free_angle * 180 / CGAL_PI << " degrees\n";
-    lambda *= p.lambda_factor;
-  }
-  r.converged = free_angle >= theta_min - tolerance;
-  r.minimum_angle = all_angle;
-  r.minimum_free_angle = free_angle;
-  internal::write_coefficients(connection, 4, c, coefficient_map);
-  result = r;
-  return Error_code::SUCCESS;
+    if(p.verbose && iteration > 0)
+      std::cerr << "angle bound: iteration " << iteration << ", lambda " << lambda / p.lambda_factor
+                << ", smallest angle " << r.minimum_free_angle * 180 / CGAL_PI << " degrees\n";
+    return r.converged = r.minimum_free_angle >= theta_min - tolerance;
+  };
+  // The local step: u and v turned apart, symmetrically, up to the bound.
+  auto local_step = [&](std::size_t, const std::complex<double>& u, const std::complex<double>& v) {
+    return internal::enforce_angle_bound(u, v, theta_min);
+  };
+  return driver.design(constraints, std::vector<double>(bundle.number_of_faces(), 1.0), 0.0, p, local_step,
+                       converged, coefficient_map, r, result);
+}
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// designs the angle-bounded frame field as the other overload, without a report.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
+          typename T = bool, typename Tag = CGAL::internal_np::all_default_t, typename Base = CGAL::internal_np::No_property>
+Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle, const ConstraintRange& constraints,
+                                            CoefficientMap coefficient_map,
+                                            const CGAL::Named_function_parameters<T, Tag, Base>& np = CGAL::parameters::default_values())
+{
+  Angle_bound_result result;
+  return design_angle_bounded_frame_field<ConcurrencyTag>(mesh_or_bundle, constraints, coefficient_map, result, np);
 }
 
 } // namespace Polyvector_fields

@@ -11,7 +11,7 @@
 /// \file compute_field_roots.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
@@ -60,20 +60,20 @@ void field_roots(const std::vector<std::complex<double> >& coefficients, std::si
   faces(0, F);
 }
 
-// World-space roots of a connection's faces, written into `root_map`.
-template <typename Vector_3, typename Connection, typename RootMap>
-void write_world_roots(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& roots,
+// World-space roots of a bundle's faces, written into `root_map`.
+template <typename Vector_3, typename Bundle, typename RootMap>
+void write_world_roots(const Bundle& bundle, std::size_t N, const std::vector<std::complex<double> >& roots,
                        RootMap root_map)
 {
   std::vector<Vector_3> vectors(N);
-  for(std::size_t f = 0; f < connection.number_of_faces(); ++f)
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
   {
     for(std::size_t k = 0; k < N; ++k)
     {
-      const std::array<double, 3> w = connection.frame(f).to_world(roots[f * N + k]);
+      const std::array<double, 3> w = bundle.frame(f).to_world(roots[f * N + k]);
       vectors[k] = Vector_3(w[0], w[1], w[2]);
     }
-    put(root_map, connection.face(f), vectors);
+    put(root_map, bundle.face(f), vectors);
   }
 }
 
@@ -88,50 +88,40 @@ void write_world_roots(const Connection& connection, std::size_t N, const std::v
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
 ///         with parallelism (TBB) the roots of the faces are computed in parallel (the maps are read and
 ///         written by the calling thread only); the result does not depend on it
-/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
+///         with the named parameter `vertex_point_map`)
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
 /// \tparam RootMap a model of `WritablePropertyMap` from faces to `std::vector<Vector_3>`, `Vector_3` the vector type of the kernel
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, model of `Kernel`}
-///     \cgalParamDefault{the kernel of the point type}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{sign_symmetric}
-///     \cgalParamDescription{use the exact `{u, -u}` root pairs of sign-symmetric fields}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
+///   \pvfParamGeomTraits
+///   \pvfParamSignSymmetric
 /// \cgalNamedParamsEnd
 ///
 /// \returns `SUCCESS`, a mesh error (`EMPTY_MESH`, `NON_TRIANGLE_FACE`, `DEGENERATE_FACE`), `INVALID_DEGREE`,
 ///          `INCONSISTENT_DEGREE` (a coefficient vector not of size `N`) or `NON_FINITE_VALUE`.
 ///          On failure `root_map` is not written.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
-          typename TriangleMesh, typename CoefficientMap, typename RootMap,
+          typename Mesh_or_bundle, typename CoefficientMap, typename RootMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code compute_field_roots(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map, RootMap root_map,
-                               const NamedParameters& np = CGAL::parameters::default_values())
+Error_code compute_field_roots(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
+                               RootMap root_map, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
+  typedef typename std::decay_t<decltype(bundle)>::Triangle_mesh Triangle_mesh;
+  typedef typename CGAL::GetGeomTraits<Triangle_mesh, NamedParameters>::type Geom_traits;
   const bool sign_symmetric = choose_parameter(get_parameter(np, internal_np::sign_symmetric), false);
   if(N == 0 || (sign_symmetric && N % 2 != 0))
     return Error_code::INVALID_DEGREE;
-  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
   std::vector<std::complex<double> > coefficients, roots;
-  const Error_code code = internal::read_coefficients(connection, N, coefficient_map, coefficients);
+  const Error_code code = internal::read_coefficients(bundle, N, coefficient_map, coefficients);
   if(code != Error_code::SUCCESS)
     return code;
   internal::field_roots<ConcurrencyTag>(coefficients, N, sign_symmetric, roots);
-  internal::write_world_roots<typename Geom_traits::Vector_3>(connection, N, roots, root_map);
+  internal::write_world_roots<typename Geom_traits::Vector_3>(bundle, N, roots, root_map);
   return Error_code::SUCCESS;
 }
 

@@ -12,11 +12,12 @@
 /// Topology of PolyVector fields: principal matching and singularities (paper, Section 3.4).
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/Singularity.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -25,21 +26,20 @@
 
 #include <cmath>
 #include <complex>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-constexpr double two_pi = 6.283185307179586476925286766559;
-
 // Angle of the corner of face(h) at target(h).
-template <typename Connection>
-double corner_angle(const Connection& connection, typename Connection::halfedge_descriptor h)
+template <typename Bundle>
+double corner_angle(const Bundle& bundle, typename Bundle::halfedge_descriptor h)
 {
   using boost::get;
-  const auto& tm = connection.mesh();
-  const auto vpm = connection.vertex_point_map();
+  const auto& tm = bundle.mesh();
+  const auto vpm = bundle.vertex_point_map();
   std::array<double, 3> v = to_array(get(vpm, target(h, tm)));
   std::array<double, 3> p = to_array(get(vpm, source(h, tm)));
   std::array<double, 3> q = to_array(get(vpm, target(next(h, tm), tm)));
@@ -50,29 +50,30 @@ double corner_angle(const Connection& connection, typename Connection::halfedge_
   return std::atan2(std::sqrt(dot(n, n)), dot(a, b));
 }
 
-// Index numerator of the interior vertex target(h0), NOTES §4: walking once
+// Index numerator of the interior vertex target(h0) (the user manual's section
+// "Singularities and their indices"): walking once
 // counterclockwise around the vertex (seen from the side the normals point
 // to), sum the principal-matching angles of the constant coefficient y_f and
 // N times the angle defect. `defined` is false if some y_f of the ring is 0.
-template <typename Connection>
-int index_numerator(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& c,
-                    typename Connection::halfedge_descriptor h0, bool& defined, double& residual)
+template <typename Bundle>
+int index_numerator(const Bundle& bundle, std::size_t N, const std::vector<std::complex<double> >& c,
+                    typename Bundle::halfedge_descriptor h0, bool& defined, double& residual)
 {
-  const auto& tm = connection.mesh();
+  const auto& tm = bundle.mesh();
   double angle_sum = 0, delta_sum = 0;
   defined = true;
   auto h = h0;
   do
   {
     const auto o = opposite(h, tm);
-    const std::size_t f = connection.index(face(h, tm)), g = connection.index(face(o, tm));
+    const std::size_t f = bundle.index(face(h, tm)), g = bundle.index(face(o, tm));
     const std::complex<double> y_f = c[f * N], y_g = c[g * N];
     if(y_f == std::complex<double>(0) || y_g == std::complex<double>(0))
       defined = false;
-    const std::complex<double> e_f = connection.edge_direction(h), e_g = -connection.edge_direction(o);
+    const std::complex<double> e_f = bundle.edge_direction(h), e_g = -bundle.edge_direction(o);
     // Arg( y_g conj(e_g)^N / (y_f conj(e_f)^N) ), for unit e_f: 1/conj(e_f)^N = e_f^N.
     delta_sum += std::arg(y_g * std::pow(std::conj(e_g), int(N)) * std::conj(y_f) * std::pow(e_f, int(N)));
-    angle_sum += corner_angle(connection, h);
+    angle_sum += corner_angle(bundle, h);
     h = prev(o, tm);  // the next face counterclockwise around target(h0)
   } while(h != h0);
   const double defect = two_pi - angle_sum;
@@ -100,46 +101,38 @@ int index_numerator(const Connection& connection, std::size_t N, const std::vect
 /// If some face around an interior vertex has `c_0 = 0`, the index there is
 /// undefined: the vertex is written to `undefined_vertices` and to no other output.
 ///
-/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
+///         with the named parameter `vertex_point_map`)
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
 /// \tparam SingularityOutputIterator an output iterator accepting `Singularity<vertex_descriptor>`
 /// \tparam VertexOutputIterator an output iterator accepting `vertex_descriptor`
 ///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
 /// \returns `SUCCESS`, a mesh error, `INVALID_DEGREE`, `INCONSISTENT_DEGREE` or `NON_FINITE_VALUE`;
 ///          nothing is written on failure.
-template <typename TriangleMesh, typename CoefficientMap, typename SingularityOutputIterator,
+template <typename Mesh_or_bundle, typename CoefficientMap, typename SingularityOutputIterator,
           typename VertexOutputIterator, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code compute_singularities(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
                                  SingularityOutputIterator singularities, VertexOutputIterator undefined_vertices,
                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
+  typedef typename std::decay_t<decltype(bundle)>::vertex_descriptor vertex_descriptor;
+  const auto& tm = bundle.mesh();
   std::vector<std::complex<double> > c;
-  const Error_code code = internal::read_coefficients(connection, N, coefficient_map, c);
+  const Error_code code = internal::read_coefficients(bundle, N, coefficient_map, c);
   if(code != Error_code::SUCCESS)
     return code;
   std::vector<Singularity<vertex_descriptor> > found;
   std::vector<vertex_descriptor> undefined;
-  for(vertex_descriptor v : vertices(tm))
+  for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
   {
+    const vertex_descriptor v = bundle.vertex(i);
     const auto h0 = halfedge(v, tm);
-    if(h0 == boost::graph_traits<TriangleMesh>::null_halfedge() || CGAL::is_border(v, tm))
+    if(h0 == boost::graph_traits<std::decay_t<decltype(tm)> >::null_halfedge() || CGAL::is_border(v, tm))
       continue;
     bool defined;
     double residual;
-    const int k = internal::index_numerator(connection, N, c, h0, defined, residual);
+    const int k = internal::index_numerator(bundle, N, c, h0, defined, residual);
     if(!defined)
       undefined.push_back(v);
     else if(k != 0)
@@ -155,14 +148,14 @@ Error_code compute_singularities(const TriangleMesh& tm, std::size_t N, Coeffici
 /// \ingroup PkgPolyvectorFieldsTopology
 ///
 /// computes the singularities as the other overload, and drops the vertices of undefined index.
-template <typename TriangleMesh, typename CoefficientMap, typename SingularityOutputIterator,
+template <typename Mesh_or_bundle, typename CoefficientMap, typename SingularityOutputIterator,
           typename T = bool, typename Tag = CGAL::internal_np::all_default_t,
           typename Base = CGAL::internal_np::No_property>
-Error_code compute_singularities(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
                                  SingularityOutputIterator singularities,
                                  const CGAL::Named_function_parameters<T, Tag, Base>& np = CGAL::parameters::default_values())
 {
-  return compute_singularities(tm, N, coefficient_map, singularities, CGAL::Emptyset_iterator(), np);
+  return compute_singularities(mesh_or_bundle, N, coefficient_map, singularities, CGAL::Emptyset_iterator(), np);
 }
 
 /// \ingroup PkgPolyvectorFieldsTopology
@@ -178,33 +171,24 @@ Error_code compute_singularities(const TriangleMesh& tm, std::size_t N, Coeffici
 ///         boundary edges are not written
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{sign_symmetric}
-///     \cgalParamDescription{use the exact `{u, -u}` root pairs of sign-symmetric fields}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
+///   \pvfParamSignSymmetric
 /// \cgalNamedParamsEnd
 ///
 /// \returns as `compute_singularities()`; nothing is written on failure.
-template <typename TriangleMesh, typename CoefficientMap, typename MatchingMap,
+template <typename Mesh_or_bundle, typename CoefficientMap, typename MatchingMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code principal_matching(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+Error_code principal_matching(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
                               MatchingMap matching, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
   const bool sign_symmetric = choose_parameter(get_parameter(np, internal_np::sign_symmetric), false);
   if(N == 0 || (sign_symmetric && N % 2 != 0))
     return Error_code::INVALID_DEGREE;
-  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
   std::vector<std::complex<double> > c, roots;
-  const Error_code code = internal::read_coefficients(connection, N, coefficient_map, c);
+  const Error_code code = internal::read_coefficients(bundle, N, coefficient_map, c);
   if(code != Error_code::SUCCESS)
     return code;
   internal::field_roots(c, N, sign_symmetric, roots);
@@ -220,7 +204,7 @@ Error_code principal_matching(const TriangleMesh& tm, std::size_t N, Coefficient
     }
     return s;
   };
-  for(const auto& e : connection.interior_edges())
+  for(const auto& e : bundle.interior_edges())
   {
     // Transport from f to g turns every vector by rho = Arg(conj(e_f) e_g).
     const double rho = std::arg(std::conj(e.e_f) * e.e_g);
@@ -232,7 +216,7 @@ Error_code principal_matching(const TriangleMesh& tm, std::size_t N, Coefficient
     while(S0 + internal::two_pi * double(s) <= -internal::two_pi / 2)
       ++s;
     const long n = long(N);
-    put(matching, edge(e.h, tm), int(((s % n) + n) % n));
+    put(matching, edge(e.h, bundle.mesh()), int(((s % n) + n) % n));
   }
   return Error_code::SUCCESS;
 }

@@ -12,15 +12,20 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
-#include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
+#include <CGAL/Polyvector_fields/internal/Local_global_driver.h>
 #include <CGAL/Polyvector_fields/internal/conjugacy_projection.h>
-#include <CGAL/Polyvector_fields/internal/field_access.h>
-#include <CGAL/Polyvector_fields/internal/frame_field_setup.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
 
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -45,38 +50,43 @@ struct Conjugate_field_result
 namespace internal {
 
 // Shape operators in the face frames and the normalised |K| of every face.
-template <typename Connection, typename CurvatureMap>
-void face_shape_operators(const Connection& connection, CurvatureMap curvatures,
-                          std::vector<std::array<double, 4> >& S, std::vector<double>& normalised_gaussian)
+template <typename Bundle, typename CurvatureMap>
+Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, std::vector<std::array<double, 4> >& S,
+                                std::vector<double>& normalised_gaussian)
 {
   using boost::get;
-  const std::size_t F = connection.number_of_faces();
+  const std::size_t F = bundle.number_of_faces();
   S.resize(F);
   normalised_gaussian.resize(F);
   double largest = 0;
   for(std::size_t f = 0; f < F; ++f)
   {
-    const auto pc = get(curvatures, connection.face(f));
-    S[f] = shape_operator(pc, connection.frame(f));
+    const auto pc = get(curvatures, bundle.face(f));
+    S[f] = shape_operator(pc, bundle.frame(f));
+    for(double x : S[f])
+      if(!std::isfinite(x))
+        return Error_code::NON_FINITE_VALUE;
     normalised_gaussian[f] = std::abs(pc.k1 * pc.k2);
     largest = (std::max)(largest, normalised_gaussian[f]);
   }
   for(double& k : normalised_gaussian)
     k = largest > 0 ? k / largest : 0.0;
+  return Error_code::SUCCESS;
 }
 
 } // namespace internal
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
-/// designs a smooth frame field `{±u, ±v}` whose vectors are conjugate with
-/// respect to the surface's second fundamental form, `u^T S v = 0` in every
-/// face (paper, Section 4.3 and Appendix A): the directions that planar-quad
-/// meshes follow.
+/// designs, on a tangent bundle, a smooth frame field `{±u, ±v}` whose vectors
+/// are conjugate with respect to the surface's second fundamental form,
+/// `u^T S v = 0` in every face (paper, Section 4.3 and Appendix A): the
+/// directions that planar-quad meshes follow.
 ///
 /// Starting from the smoothest frame field that satisfies `constraints`, the
 /// algorithm alternates a local step, which projects `(u, v)` of each face onto
-/// the quadric `u^T S v = 0` (the closest conjugate pair), and a global step,
+/// the quadric `u^T S v = 0` (the closest conjugate pair; the user manual's
+/// section "Conjugate frame fields" states the projection), and a global step,
 /// which finds the smoothest field close to the local one with weights
 /// `lambda * Khat_f` (Eq. 16, `Khat_f = |k1 k2|` normalised to `[0, 1]`) plus the
 /// orthogonality term `w |c_2|^2` (Eq. 17), keeping the hard constraints.
@@ -85,12 +95,7 @@ void face_shape_operators(const Connection& connection, CurvatureMap curvatures,
 /// constraint falls below `tolerance`, the field being rescaled so that the root
 /// mean square length of its vectors is 1, or after `number_of_iterations` steps.
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
-///         the two degrees of each global step are factored and solved in parallel with TBB (unless a constraint
-///         gives a single vector, which couples the degrees into one system); the result does not depend on it
-/// \tparam TriangleMesh a model of `FaceListGraph`
-/// \tparam ConstraintRange a range of `Face_constraint<face_descriptor, Vector_3>` (at most 2 vectors each)
-/// \tparam CoefficientMap a model of `WritablePropertyMap` from faces to `std::vector<std::complex<double>>`
+/// \pvfFrameFieldTparams
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{principal_curvature_map}
@@ -104,53 +109,22 @@ void face_shape_operators(const Connection& connection, CurvatureMap curvatures,
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{initial_lambda}
-///     \cgalParamDescription{the first weight `lambda` of the global step, `> 0`}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{100}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{lambda_factor}
-///     \cgalParamDescription{the factor of `lambda` at each iteration, `>= 1`}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{1.5}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{tolerance}
 ///     \cgalParamDescription{the residual below which the iterations stop, `> 0`}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1e-4}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the maximum number of global steps}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{100}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{verbose}
-///     \cgalParamDescription{print the residual of each iteration on `std::cerr`}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, model of `Kernel`}
-///     \cgalParamDefault{the kernel of the point type}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{sparse_linear_solver}
-///     \cgalParamDescription{a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`}
-///     \cgalParamDefault{`Default_sparse_solver`}
-///   \cgalParamNEnd
+///   \pvfLocalGlobalParams{100}
 /// \cgalNamedParamsEnd
 ///
 /// \returns `SUCCESS` (also when the iterations did not converge: see `result.converged`),
-///          `NOT_A_FRAME_FIELD` if `N != 4` or `sign_symmetric(false)` is given, `INVALID_PARAMETER`
-///          or `NON_FINITE_VALUE` for a bad parameter, `CURVATURE_ESTIMATION_FAILED`, or an error of
-///          `design_polyvector_field()`. On failure `coefficient_map` is not written.
+///          `INVALID_PARAMETER` or `NON_FINITE_VALUE` for a bad parameter or curvature, an error of
+///          `estimate_principal_curvatures()`, or an error of `Polyvector_field_designer::add_constraint()`
+///          and `Polyvector_field_designer::solve()`. On failure `coefficient_map` and `result` are not written.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
-          typename TriangleMesh, typename ConstraintRange, typename CoefficientMap,
+          typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, const ConstraintRange& constraints,
+Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, const ConstraintRange& constraints,
                                         CoefficientMap coefficient_map, Conjugate_field_result& result,
                                         const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -158,9 +132,6 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef std::complex<double> Complex;
-  typedef internal::Frame_field_types<TriangleMesh, NamedParameters, ConcurrencyTag> Types;
-  typedef typename Types::Geom_traits Geom_traits;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
   const double orthogonality = choose_parameter(get_parameter(np, internal_np::orthogonality_weight), 0.0);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 1e-4);
@@ -173,84 +144,74 @@ Error_code design_conjugate_frame_field(const TriangleMesh& tm, std::size_t N, c
   if(!(orthogonality >= 0) || !(tolerance > 0))
     return Error_code::INVALID_PARAMETER;
 
-  std::unique_ptr<typename Types::Designer> designer;
-  code = internal::smooth_frame_field<ConcurrencyTag>(tm, N, constraints, np, designer);
-  if(code != Error_code::SUCCESS)
-    return code;
-  const auto& connection = designer->connection();
-  const std::size_t F = connection.number_of_faces();
-
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
+  typedef std::decay_t<decltype(bundle)> Bundle;
+  typedef typename CGAL::GetGeomTraits<typename Bundle::Triangle_mesh, NamedParameters>::type Geom_traits;
+  auto driver = internal::make_local_global_driver<ConcurrencyTag>(bundle, np);
   // Curvature: given, or estimated.
   std::vector<std::array<double, 4> > S;
   std::vector<double> Khat;
-  typedef Principal_curvatures<typename Geom_traits::Vector_3> Curvatures;
   if constexpr(!is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
-  {
-    internal::face_shape_operators(connection, get_parameter(np, internal_np::principal_curvature_map), S, Khat);
-  }
+    code = internal::face_shape_operators(bundle, get_parameter(np, internal_np::principal_curvature_map), S, Khat);
   else
   {
-    std::map<face_descriptor, Curvatures> estimated;
-    code = estimate_principal_curvatures(tm, boost::make_assoc_property_map(estimated), np);
-    if(code != Error_code::SUCCESS)
-      return code;
-    internal::face_shape_operators(connection, boost::make_assoc_property_map(estimated), S, Khat);
+    std::map<typename Bundle::face_descriptor, Principal_curvatures<typename Geom_traits::Vector_3> > estimated;
+    code = estimate_principal_curvatures(bundle, boost::make_assoc_property_map(estimated), np);
+    if(code == Error_code::SUCCESS)
+      code = internal::face_shape_operators(bundle, boost::make_assoc_property_map(estimated), S, Khat);
   }
-  for(const auto& s : S)
-    for(double x : s)
-      if(!std::isfinite(x))
-        return Error_code::NON_FINITE_VALUE;
+  if(code != Error_code::SUCCESS)
+    return code;
 
-  std::vector<Complex> c = designer->coefficient_array(), targets(4 * F);
-  typename Types::Iterations iterations = Types::iterations(*designer, Khat, orthogonality);
-
-  // Residuals are measured on the field scaled to unit root mean square length.
+  // The measure: residuals on the field scaled to unit root mean square
+  // length, the scale being that of the smooth field.
+  const std::size_t F = bundle.number_of_faces();
   Conjugate_field_result r;
-  double mean_square = 0;
-  for(std::size_t f = 0; f < F; ++f)
-  {
-    const auto uv = internal::frame_vectors(&c[4 * f]);
-    mean_square += (std::norm(uv.first) + std::norm(uv.second)) / (2.0 * double(F));
-  }
-  r.scale = mean_square > 0 ? 1.0 / std::sqrt(mean_square) : 1.0;
-  auto measure = [&]() {
+  auto converged = [&](const std::vector<Complex>& field, std::size_t iteration, double lambda) {
+    if(iteration == 0)
+    {
+      double mean_square = 0;
+      for(std::size_t f = 0; f < F; ++f)
+      {
+        const auto uv = internal::frame_vectors(&field[4 * f]);
+        mean_square += (std::norm(uv.first) + std::norm(uv.second)) / (2.0 * double(F));
+      }
+      r.scale = mean_square > 0 ? 1.0 / std::sqrt(mean_square) : 1.0;
+    }
     r.free_residual = r.constrained_residual = 0;
     for(std::size_t f = 0; f < F; ++f)
     {
-      const auto uv = internal::frame_vectors(&c[4 * f]);
+      const auto uv = internal::frame_vectors(&field[4 * f]);
       const double e = r.scale * r.scale * std::abs(internal::conjugacy_residual(S[f], uv.first, uv.second));
-      (iterations.is_fixed(f) ? r.constrained_residual : r.free_residual) += e;
+      (driver.is_fixed(f) ? r.constrained_residual : r.free_residual) += e;
     }
     r.residual = r.free_residual + r.constrained_residual;
-  };
-
-  measure();
-  r.residual_history.push_back(r.free_residual);
-  double lambda = p.initial_lambda;
-  while(!(r.free_residual < tolerance) && r.iterations < p.maximum_iterations)
-  {
-    // Local step: the closest conjugate pair of each free face.
-    for(std::size_t f = 0; f < F; ++f)
-    {
-      const auto uv = internal::frame_vectors(&c[4 * f]);
-      const auto conjugate = iterations.is_fixed(f) ? uv : internal::project_onto_conjugate_pair(S[f], uv.first, uv.second);
-      internal::frame_coefficients(conjugate.first, conjugate.second, &targets[4 * f]);
-    }
-    // Global step.
-    if(!iterations.global_step(lambda, targets, c))
-      return Error_code::SOLVER_FAILURE;
-    ++r.iterations;
-    measure();
     r.residual_history.push_back(r.free_residual);
-    if(p.verbose)
-      std::cerr << "conjugate field: iteration " << r.iterations << ", lambda " << lambda << ", residual (free faces) "
-                << r.free_residual << ", (constrained faces) " << r.constrained_residual << "\n";
-    lambda *= p.lambda_factor;
-  }
-  r.converged = r.free_residual < tolerance;
-  internal::write_coefficients(connection, 4, c, coefficient_map);
-  result = r;
-  return Error_code::SUCCESS;
+    if(p.verbose && iteration > 0)
+      std::cerr << "conjugate field: iteration " << iteration << ", lambda " << lambda / p.lambda_factor
+                << ", residual (free faces) " << r.free_residual << ", (constrained faces) " << r.constrained_residual
+                << "\n";
+    return r.converged = r.free_residual < tolerance;
+  };
+  // The local step: the closest conjugate pair.
+  auto local_step = [&](std::size_t f, const Complex& u, const Complex& v) {
+    return internal::project_onto_conjugate_pair(S[f], u, v);
+  };
+  return driver.design(constraints, Khat, orthogonality, p, local_step, converged, coefficient_map, r, result);
+}
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// designs the conjugate frame field as the other overload, without a report.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
+          typename T = bool, typename Tag = CGAL::internal_np::all_default_t, typename Base = CGAL::internal_np::No_property>
+Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, const ConstraintRange& constraints,
+                                        CoefficientMap coefficient_map,
+                                        const CGAL::Named_function_parameters<T, Tag, Base>& np = CGAL::parameters::default_values())
+{
+  Conjugate_field_result result;
+  return design_conjugate_frame_field<ConcurrencyTag>(mesh_or_bundle, constraints, coefficient_map, result, np);
 }
 
 } // namespace Polyvector_fields

@@ -37,19 +37,9 @@ namespace Polyvector_fields {
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, model of `Kernel`}
-///     \cgalParamDefault{the kernel of the point type}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{sign_symmetric}
-///     \cgalParamDescription{whether the field is made of pairs `{u, -u}`}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
+///   \pvfParamGeomTraits
+///   \pvfParamSignSymmetric
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`}
 ///     \cgalParamDefault{`Default_sparse_solver`}

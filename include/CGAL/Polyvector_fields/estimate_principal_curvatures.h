@@ -13,8 +13,8 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/face_frames.h>
-#include <CGAL/Polyvector_fields/internal/Face_numbering.h>
 #include <CGAL/Polyvector_fields/internal/curvature_tensor.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
@@ -140,7 +140,8 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
 /// suits smooth, finely sampled surfaces; degree 2 is the more robust choice
 /// for noisy or coarse meshes.
 ///
-/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` and `VertexListGraph`
+///         (whose bundle is then built with the named parameter `vertex_point_map`)
 /// \tparam CurvatureMap a model of `WritablePropertyMap` with
 ///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
 ///         `Principal_curvatures<Vector_3>` as value type, where `Vector_3` is
@@ -148,24 +149,14 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
 ///         of the geometric traits)
 /// \tparam NamedParameters a sequence of named parameters
 ///
-/// \param tm the mesh; it is not modified
+/// \param mesh_or_bundle the tangent bundle of the mesh, or the mesh; it is not modified
 /// \param curvature_map receives the curvatures of every face; written only
 ///        when the function returns `Error_code::SUCCESS`
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-///                    as key type and `%Point_3` as value type}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class}
-///     \cgalParamType{a model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-///     \cgalParamExtra{accepted for uniformity with \cgal; the computations only use the points, converted to `double`}
-///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
+///   \pvfParamGeomTraits
 ///   \cgalParamNBegin{degree_fitting}
 ///     \cgalParamDescription{the degree `d` of the fitted polynomial (CGAL's tag `CGAL::parameters::degree_fitting`)}
 ///     \cgalParamType{an integral type}
@@ -210,21 +201,20 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
 /// - `Error_code::SUCCESS` otherwise.
 ///
 /// \sa `Principal_curvatures`, `shape_operator()`, `select_curvature_constraints()`
-template <typename TriangleMesh,
+template <typename Mesh_or_bundle,
           typename CurvatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code estimate_principal_curvatures(const TriangleMesh& tm,
+Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
                                          CurvatureMap curvature_map,
                                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using boost::get;
   using boost::put;
 
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
+  typedef typename std::decay_t<decltype(bundle)>::Triangle_mesh TriangleMesh;
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
-  typedef typename Graph_traits::face_descriptor face_descriptor;
-  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
 
   typedef typename boost::property_traits<CurvatureMap>::value_type Curvature_value;
@@ -245,49 +235,21 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
     return Error_code::INVALID_PARAMETER;
   const std::size_t ring_size = static_cast<std::size_t>(ring_size_value);
 
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
+  // ---- faces and their frames: the bundle's
+  if(bundle.status() != Error_code::SUCCESS)
+    return bundle.status();
+  const TriangleMesh& tm = bundle.mesh();
+  const std::size_t nf = bundle.number_of_faces();
 
-  // ---- faces: triangles, frames
-  std::vector<face_descriptor> face_list;
-  face_list.reserve(num_faces(tm));
-  for(face_descriptor f : faces(tm))
-    face_list.push_back(f);
-  if(face_list.empty())
-    return Error_code::EMPTY_MESH;
-
-  std::vector<Face_frame> frames(face_list.size());
-  for(std::size_t i = 0; i < face_list.size(); ++i)
-  {
-    const halfedge_descriptor h = halfedge(face_list[i], tm);
-    if(next(next(next(h, tm), tm), tm) != h)
-      return Error_code::NON_TRIANGLE_FACE;
-  }
-  for(std::size_t i = 0; i < face_list.size(); ++i)
-  {
-    const Error_code code = face_frame(face_list[i], tm, frames[i], CGAL::parameters::vertex_point_map(vpm));
-    if(code != Error_code::SUCCESS)
-      return code;
-  }
-
-  // ---- vertices: numbering, points, area-weighted normals
-  internal::Numbering<vertex_descriptor> vertex_index;
-  std::vector<vertex_descriptor> vertex_list;
-  vertex_list.reserve(num_vertices(tm));
-  for(vertex_descriptor v : vertices(tm))
-  {
-    vertex_index.add(v);
-    vertex_list.push_back(v);
-  }
-  const std::size_t nv = vertex_list.size();
-  // The points scaled by one power of two 2^-e, so that the largest coordinate
-  // is in [1, 2): the fits cannot overflow or underflow whatever the scale of
-  // the mesh; curvatures, which scale like 1/length, are scaled back by 2^-e.
+  // ---- vertices: points scaled by one power of two 2^-e, so that the largest
+  // coordinate is in [1, 2): the fits cannot overflow or underflow whatever the
+  // scale of the mesh; curvatures, which scale like 1/length, are scaled back by 2^-e.
+  const std::size_t nv = bundle.number_of_vertices();
   std::vector<std::array<double, 3> > points(nv);
   double largest = 0;
   for(std::size_t i = 0; i < nv; ++i)
   {
-    points[i] = internal::to_array(get(vpm, vertex_list[i]));
+    points[i] = bundle.point(i);
     for(double x : points[i])
       largest = (std::max)(largest, std::abs(x));
   }
@@ -296,15 +258,16 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
     for(double& x : p)
       x = std::ldexp(x, -scale_exponent);
 
+  // ---- area-weighted vertex normals
   std::vector<std::array<double, 3> > vertex_normals(nv, std::array<double, 3>{ 0., 0., 0. });
   std::vector<double> incident_area(nv, 0.);
   std::vector<char> in_face(nv, 0);
-  for(face_descriptor f : face_list)
+  for(std::size_t fi = 0; fi < nf; ++fi)
   {
-    const halfedge_descriptor h = halfedge(f, tm);
-    const std::size_t i0 = vertex_index(source(h, tm));
-    const std::size_t i1 = vertex_index(target(h, tm));
-    const std::size_t i2 = vertex_index(target(next(h, tm), tm));
+    const halfedge_descriptor h = halfedge(bundle.face(fi), tm);
+    const std::size_t i0 = bundle.index(source(h, tm));
+    const std::size_t i1 = bundle.index(target(h, tm));
+    const std::size_t i2 = bundle.index(target(next(h, tm), tm));
     const std::array<double, 3> n = internal::cross(internal::difference(points[i1], points[i0]),
                                                     internal::difference(points[i2], points[i0]));
     const double area2 = std::sqrt(internal::dot(n, n));
@@ -353,9 +316,9 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
       next_ring.clear();
       for(std::size_t wi : ring)
       {
-        for(halfedge_descriptor h : CGAL::halfedges_around_target(vertex_list[wi], tm))
+        for(halfedge_descriptor h : CGAL::halfedges_around_target(bundle.vertex(wi), tm))
         {
-          const std::size_t ui = vertex_index(source(h, tm));
+          const std::size_t ui = bundle.index(source(h, tm));
           if(visit_stamp[ui] == stamp || !in_face[ui])
             continue;
           visit_stamp[ui] = stamp;
@@ -368,7 +331,7 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
       return !ring.empty();
     };
     bool exhausted = false;
-    const std::size_t vertex_target = CGAL::is_border(vertex_list[vi], tm) ? boundary_target_points : target_points;
+    const std::size_t vertex_target = CGAL::is_border(bundle.vertex(vi), tm) ? boundary_target_points : target_points;
     while(!exhausted && (rings < ring_size || neighbourhood.size() < vertex_target))
       exhausted = !grow_one_ring();
 
@@ -406,13 +369,13 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
   }
 
   // ---- per face: average the three tensors in the face frame, diagonalise
-  std::vector<Curvature_value> values(face_list.size());
-  for(std::size_t fi = 0; fi < face_list.size(); ++fi)
+  std::vector<Curvature_value> values(nf);
+  for(std::size_t fi = 0; fi < nf; ++fi)
   {
-    const Face_frame& frame = frames[fi];
-    const halfedge_descriptor h = halfedge(face_list[fi], tm);
-    const std::size_t corners[3] = { vertex_index(source(h, tm)), vertex_index(target(h, tm)),
-                                     vertex_index(target(next(h, tm), tm)) };
+    const Face_frame& frame = bundle.frame(fi);
+    const halfedge_descriptor h = halfedge(bundle.face(fi), tm);
+    const std::size_t corners[3] = { bundle.index(source(h, tm)), bundle.index(target(h, tm)),
+                                     bundle.index(target(next(h, tm), tm)) };
     double s00 = 0., s01 = 0., s11 = 0.;
     for(std::size_t vi : corners)
     {
@@ -429,11 +392,7 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
         s11 += term.first * y * y;
       }
     }
-    s00 /= 3.;
-    s01 /= 3.;
-    s11 /= 3.;
-
-    const internal::Curvature_eigen_2 eigen = internal::curvature_eigen_2(s00, s01, s11);
+    const internal::Symmetric_eigen_2 eigen = internal::symmetric_eigen_2(s00 / 3., s01 / 3., s11 / 3.);
     const double c = std::cos(eigen.angle), s = std::sin(eigen.angle);
     const std::array<double, 3> d1 = { c * frame.e1[0] + s * frame.e2[0], c * frame.e1[1] + s * frame.e2[1],
                                        c * frame.e1[2] + s * frame.e2[2] };
@@ -449,8 +408,8 @@ Error_code estimate_principal_curvatures(const TriangleMesh& tm,
     value.d2 = Output_vector(d2[0], d2[1], d2[2]);
   }
 
-  for(std::size_t fi = 0; fi < face_list.size(); ++fi)
-    put(curvature_map, face_list[fi], values[fi]);
+  for(std::size_t fi = 0; fi < nf; ++fi)
+    put(curvature_map, bundle.face(fi), values[fi]);
   return Error_code::SUCCESS;
 }
 

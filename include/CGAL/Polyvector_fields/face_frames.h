@@ -161,12 +161,7 @@ inline Error_code triangle_frame(std::array<double, 3> p0,
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-///                    as key type and `%Point_3` as value type}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
 /// \cgalNamedParamsEnd
 ///
 /// \returns `Error_code::NON_TRIANGLE_FACE` if `f` is not a triangle,

@@ -12,12 +12,12 @@
 /// Per-face measures of frame fields: the angle between `u` and `v`, and the deviation from conjugacy.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
-#include <CGAL/Polyvector_fields/internal/Frame_field_iterations.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/angle_bound_projection.h>
 #include <CGAL/Polyvector_fields/internal/conjugacy_projection.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
+#include <CGAL/Polyvector_fields/internal/frame_field_polynomial.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -30,79 +30,67 @@ namespace Polyvector_fields {
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
-/// computes, for every face of a frame field `{±u, ±v}`, the smallest angle
-/// between two of its vectors, in radians, in `[0, pi/2]`.
+/// computes, for every face of a frame field `{±u, ±v}` on a tangent bundle
+/// or a mesh, the smallest angle between two of its vectors, in radians, in
+/// `[0, pi/2]`.
 ///
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
+///         with the named parameter `vertex_point_map`)
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size 4
 /// \tparam AngleMap a model of `WritablePropertyMap` from faces to `double`
 ///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
 /// \returns `SUCCESS`, a mesh error, `INCONSISTENT_DEGREE` (a coefficient vector not of size 4) or
 ///          `NON_FINITE_VALUE`; nothing is written on failure.
-template <typename TriangleMesh, typename CoefficientMap, typename AngleMap,
+template <typename Mesh_or_bundle, typename CoefficientMap, typename AngleMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code compute_frame_angles(const TriangleMesh& tm, CoefficientMap coefficient_map, AngleMap angle_map,
+Error_code compute_frame_angles(const Mesh_or_bundle& mesh_or_bundle, CoefficientMap coefficient_map, AngleMap angle_map,
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
   std::vector<std::complex<double> > c;
-  const Error_code code = internal::read_coefficients(connection, 4, coefficient_map, c);
+  const Error_code code = internal::read_coefficients(bundle, 4, coefficient_map, c);
   if(code != Error_code::SUCCESS)
     return code;
-  for(std::size_t f = 0; f < connection.number_of_faces(); ++f)
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
   {
     const auto uv = internal::frame_vectors(&c[4 * f]);
-    put(angle_map, connection.face(f), internal::smallest_frame_angle(uv.first, uv.second));
+    put(angle_map, bundle.face(f), internal::smallest_frame_angle(uv.first, uv.second));
   }
   return Error_code::SUCCESS;
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
-/// computes, for every face of a frame field `{±u, ±v}`, its deviation from
-/// conjugacy `|u^T S v| / (|u| |v| max(|k1|, |k2|))`, a number in `[0, 1]`
-/// that does not depend on the lengths of `u` and `v` nor on the size of the
-/// mesh; it is 0 where `u` and `v` are conjugate (and where the face is flat).
+/// computes, for every face of a frame field `{±u, ±v}` on a tangent bundle
+/// or a mesh, its deviation from conjugacy `|u^T S v| / (|u| |v| max(|k1|, |k2|))`,
+/// a number in `[0, 1]` that does not depend on the lengths of `u` and `v` nor
+/// on the size of the mesh; it is 0 where `u` and `v` are conjugate (and where
+/// the face is flat).
 ///
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
+///         with the named parameter `vertex_point_map`)
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size 4
 /// \tparam CurvatureMap a model of `ReadablePropertyMap` from faces to `Principal_curvatures<Vector_3>`
 /// \tparam DeviationMap a model of `WritablePropertyMap` from faces to `double`
 ///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
 /// \returns as `compute_frame_angles()`, and `NON_FINITE_VALUE` for a non-finite curvature; nothing is written on failure.
-template <typename TriangleMesh, typename CoefficientMap, typename CurvatureMap, typename DeviationMap,
+template <typename Mesh_or_bundle, typename CoefficientMap, typename CurvatureMap, typename DeviationMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code compute_conjugacy_deviation(const TriangleMesh& tm, CoefficientMap coefficient_map, CurvatureMap curvature_map,
-                                       DeviationMap deviation_map,
+Error_code compute_conjugacy_deviation(const Mesh_or_bundle& mesh_or_bundle, CoefficientMap coefficient_map,
+                                       CurvatureMap curvature_map, DeviationMap deviation_map,
                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   using boost::get;
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
   std::vector<std::complex<double> > c;
-  const Error_code code = internal::read_coefficients(connection, 4, coefficient_map, c);
+  const Error_code code = internal::read_coefficients(bundle, 4, coefficient_map, c);
   if(code != Error_code::SUCCESS)
     return code;
-  std::vector<double> deviation(connection.number_of_faces());
-  for(std::size_t f = 0; f < connection.number_of_faces(); ++f)
+  std::vector<double> deviation(bundle.number_of_faces());
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
   {
-    const auto pc = get(curvature_map, connection.face(f));
-    const std::array<double, 4> S = shape_operator(pc, connection.frame(f));
+    const auto pc = get(curvature_map, bundle.face(f));
+    const std::array<double, 4> S = shape_operator(pc, bundle.frame(f));
     const double k = (std::max)(std::abs(pc.k1), std::abs(pc.k2));
     if(!std::isfinite(k) || !std::isfinite(S[0]) || !std::isfinite(S[1]) || !std::isfinite(S[3]))
       return Error_code::NON_FINITE_VALUE;
@@ -110,8 +98,8 @@ Error_code compute_conjugacy_deviation(const TriangleMesh& tm, CoefficientMap co
     const double scale = std::abs(uv.first) * std::abs(uv.second) * k;
     deviation[f] = scale > 0 ? std::abs(internal::conjugacy_residual(S, uv.first, uv.second)) / scale : 0.0;
   }
-  for(std::size_t f = 0; f < connection.number_of_faces(); ++f)
-    put(deviation_map, connection.face(f), deviation[f]);
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
+    put(deviation_map, bundle.face(f), deviation[f]);
   return Error_code::SUCCESS;
 }
 

@@ -14,6 +14,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
@@ -307,6 +308,19 @@ Error_code select_curvature_constraints(
   }
   out.swap(result);
   return Error_code::SUCCESS;
+}
+
+/// \ingroup PkgPolyvectorFieldsCurvature
+///
+/// selects curvature constraints on the mesh of a tangent bundle; see the other overload.
+template <typename TriangleMesh, typename VertexPointMap, typename CurvatureMap, typename Vector_3,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code select_curvature_constraints(
+  const Tangent_bundle<TriangleMesh, VertexPointMap>& bundle, CurvatureMap curvature_map,
+  std::vector<Face_constraint<typename boost::graph_traits<TriangleMesh>::face_descriptor, Vector_3> >& out,
+  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return select_curvature_constraints(bundle.mesh(), curvature_map, out, np);
 }
 
 } // namespace Polyvector_fields

@@ -11,7 +11,7 @@
 /// \file smoothness_energy.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -24,12 +24,12 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-// Eq. 6 with the transport power N - m (NOTES §1), on a flat coefficient array.
-template <typename Connection>
-double smoothness_energy(const Connection& connection, std::size_t N, const std::vector<std::complex<double> >& c)
+// Eq. 6 with the transport power N - m, on a flat coefficient array.
+template <typename Bundle>
+double smoothness_energy(const Bundle& bundle, std::size_t N, const std::vector<std::complex<double> >& c)
 {
   double energy = 0;
-  for(const auto& e : connection.interior_edges())
+  for(const auto& e : bundle.interior_edges())
     for(std::size_t m = 0; m < N; ++m)
     {
       const int power = int(N - m);
@@ -44,38 +44,28 @@ double smoothness_energy(const Connection& connection, std::size_t N, const std:
 /// \ingroup PkgPolyvectorFieldsDesign
 ///
 /// returns the smoothness energy of a PolyVector field (paper Eq. 6, with the
-/// transport power `N - m` of NOTES §1):
-/// the sum over interior edges `(f, g)` and degrees `m` of
+/// transport power `N - m` of the user manual's section "Smoothness"): the sum
+/// over interior edges `(f, g)` and degrees `m` of
 /// `|c_{f,m} conj(e_f)^(N-m) - c_{g,m} conj(e_g)^(N-m)|^2`, where `e_f`, `e_g`
 /// are the unit direction of the common edge in the frames of `f` and `g`.
 /// It is zero exactly for a field that is Levi-Civita parallel across every edge.
 ///
-/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
+///         with the named parameter `vertex_point_map`)
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
 ///
 /// \returns the energy, or a quiet NaN when the mesh is not a valid triangle mesh, `N` is 0,
 ///          or a coefficient vector is not of size `N` or not finite.
-template <typename TriangleMesh, typename CoefficientMap,
+template <typename Mesh_or_bundle, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-double smoothness_energy(const TriangleMesh& tm, std::size_t N, CoefficientMap coefficient_map,
+double smoothness_energy(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  Levi_civita_connection<TriangleMesh, std::remove_const_t<decltype(vpm)> > connection(tm, vpm);
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
   std::vector<std::complex<double> > c;
-  if(internal::read_coefficients(connection, N, coefficient_map, c) != Error_code::SUCCESS)
+  if(internal::read_coefficients(bundle, N, coefficient_map, c) != Error_code::SUCCESS)
     return std::numeric_limits<double>::quiet_NaN();
-  return internal::smoothness_energy(connection, N, c);
+  return internal::smoothness_energy(bundle, N, c);
 }
 
 } // namespace Polyvector_fields

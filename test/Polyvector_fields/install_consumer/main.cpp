@@ -13,7 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/Levi_civita_connection.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 
 #ifdef CGAL_PVF_HAS_CHOLMOD
 #include <cholmod.h>
@@ -45,7 +45,7 @@ int main()
     return EXIT_FAILURE;
   }
 
-  const PVF::Levi_civita_connection<Mesh> connection(tm);
+  const PVF::Tangent_bundle<Mesh> connection(tm);
   if(connection.status() != PVF::Error_code::SUCCESS) {
     std::cerr << "install_consumer: connection failed: "
               << PVF::get_error_message(connection.status()) << std::endl;

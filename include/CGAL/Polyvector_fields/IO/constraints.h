@@ -358,27 +358,15 @@ Error_code read_dmat_constraints_from_text(std::string_view b_text, std::string_
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class; its `Vector_3` is the vector type of `out`}
-///     \cgalParamType{a class model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
-///   \cgalParamNEnd
+///   \pvfParamGeomTraits
 ///   \cgalParamNBegin{expected_degree}
 ///     \cgalParamDescription{the degree `N` of the field: a face with more than `N` vectors is refused at its first
 ///                           number too many (`Error_code::TOO_MANY_CONSTRAINT_VECTORS`); `0` accepts any count}
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_file_size}
-///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{1 GiB}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{error_message}
-///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its place (line, row, face)}
-///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
+///   \pvfParamMaximumFileSize
+///   \pvfParamErrorMessage{its place (line or row and face)}
 /// \cgalNamedParamsEnd
 ///
 /// \returns
@@ -509,27 +497,15 @@ Error_code write_constraints(const std::string& filename, const TriangleMesh& tm
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class; its `Vector_3` is the vector type of `out`}
-///     \cgalParamType{a class model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
-///   \cgalParamNEnd
+///   \pvfParamGeomTraits
 ///   \cgalParamNBegin{expected_degree}
 ///     \cgalParamDescription{the degree `N` of the field: a face with more than `N` vectors is refused at its first
 ///                           number too many (`Error_code::TOO_MANY_CONSTRAINT_VECTORS`); `0` accepts any count}
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_file_size}
-///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{1 GiB}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{error_message}
-///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its place (line, row, face)}
-///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
+///   \pvfParamMaximumFileSize
+///   \pvfParamErrorMessage{its place (line or row and face)}
 /// \cgalNamedParamsEnd
 ///
 /// \returns

@@ -98,8 +98,12 @@ Error_code read_rawfield_from_text(std::string_view text, const TriangleMesh& tm
   if(!reader.next_line() || !reader.next_token(token) || parse_integer(token, N) != Token_status::OK ||
      !reader.next_token(token) || parse_integer(token, F) != Token_status::OK || reader.line_has_more())
     return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the header is not two integers 'N F'");
-  if(N == 0 || N > (std::numeric_limits<std::size_t>::max)() / 3)
-    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the degree N = " + std::to_string(N) + " is not valid");
+  // Each of the 3N numbers of a face line takes at least 2 characters: an N
+  // that the text cannot hold is refused before anything is allocated.
+  if(N == 0 || N > (text.size() / 2 + 1) / 3)
+    return diagnostic.fail_at(reader, Error_code::MALFORMED_FILE, "the degree N = " + std::to_string(N) +
+                                                                    " is not valid for a file of " +
+                                                                    std::to_string(text.size()) + " bytes");
   if(expected_N != 0 && N != expected_N)
     return diagnostic.fail_at(reader, Error_code::INCONSISTENT_DEGREE, "the degree is " + std::to_string(N) +
                                                                          ", not " + std::to_string(expected_N));
@@ -244,27 +248,10 @@ Error_code write_rawfield(const std::string& filename, const TriangleMesh& tm, R
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, used to construct the vectors}
-///     \cgalParamType{a class model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{expected_degree}
-///     \cgalParamDescription{the degree the file must have
-///       (`CGAL::Polyvector_fields::parameters::expected_degree(N)`)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{`0`: any degree is accepted}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_file_size}
-///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{1 GiB}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{error_message}
-///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its line}
-///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
+///   \pvfParamGeomTraits
+///   \pvfParamExpectedDegree
+///   \pvfParamMaximumFileSize
+///   \pvfParamErrorMessage{its line}
 /// \cgalNamedParamsEnd
 ///
 /// \returns

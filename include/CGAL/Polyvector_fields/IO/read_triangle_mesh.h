@@ -16,11 +16,11 @@
 #include <CGAL/Polyvector_fields/IO/internal/polygon_soup.h>
 #include <CGAL/Polyvector_fields/IO/internal/soup_repair.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
+#include <CGAL/Polyvector_fields/IO/internal/triangulate_polygons.h>
 #include <CGAL/Polyvector_fields/face_frames.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -80,24 +80,6 @@ void collect_garbage_if_any(Mesh& tm)
   if constexpr(Has_collect_garbage<Mesh>::value)
     tm.collect_garbage();
 }
-
-// Counts the faces that triangulate_faces() splits, and gives each new
-// triangle the source of the face it comes from.
-template <typename Mesh, typename SourceMap>
-struct Triangulation_tracker : public CGAL::Polygon_mesh_processing::Triangulate_faces::Default_visitor<Mesh>
-{
-  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
-  SourceMap source;
-  std::size_t* split;
-  std::size_t current = 0;
-  Triangulation_tracker(SourceMap s, std::size_t* n) : source(s), split(n) {}
-  void before_subface_creations(face_descriptor f)
-  {
-    current = get(source, f);
-    ++*split;
-  }
-  void after_subface_created(face_descriptor f) { put(source, f, current); }
-};
 
 template <typename Mesh>
 std::size_t count_faces(const Mesh& tm)
@@ -162,6 +144,13 @@ Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Mesh_repa
   r.split_vertices = counts.split_vertices;
   r.isolated_vertices = counts.isolated_vertices;
 
+  if(repair)
+  {
+    code = triangulate_soup_polygons(soup, source, r.triangulated_faces, diagnostic);
+    if(code != Error_code::SUCCESS)
+      return code;
+  }
+
   // The mesh, face by face in soup order.
   TriangleMesh mesh;
   auto vpm = get(CGAL::vertex_point, mesh);
@@ -186,19 +175,6 @@ Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Mesh_repa
     put(source_of, f, source[i]);
   }
 
-  if(repair)
-  {
-    typedef Triangulation_tracker<TriangleMesh, decltype(source_of)> Tracker;
-    std::vector<face_descriptor> polygons;
-    for(face_descriptor f : faces(mesh))
-      if(!CGAL::is_triangle(halfedge(f, mesh), mesh))
-        polygons.push_back(f);
-    if(!polygons.empty() &&
-       !CGAL::Polygon_mesh_processing::triangulate_faces(polygons, mesh,
-                                                         CGAL::parameters::visitor(Tracker(source_of, &r.triangulated_faces))))
-      return diagnostic.fail(Error_code::NON_TRIANGLE_FACE, "a face with more than three vertices cannot be triangulated");
-  }
-
   face_descriptor degenerate;
   const std::size_t degenerate_faces = count_degenerate_faces(mesh, degenerate);
   if(degenerate_faces > 0)
@@ -209,6 +185,9 @@ Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Mesh_repa
     CGAL::Polygon_mesh_processing::remove_degenerate_faces(mesh);
     collect_garbage_if_any(mesh);
     r.degenerate_faces = degenerate_faces;
+    if(!CGAL::is_valid_polygon_mesh(mesh) || !CGAL::is_triangle_mesh(mesh))
+      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH,
+                             "the removal of the degenerate faces did not leave a valid triangle mesh");
     if(count_faces(mesh) == 0)
       return diagnostic.fail(Error_code::EMPTY_MESH, "no face is left once the degenerate ones are removed");
     if(count_degenerate_faces(mesh, degenerate) > 0)
@@ -240,8 +219,10 @@ Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Mesh_repa
 /// - duplicate points (repair: merged, which joins a soup of separate
 ///   triangles, as an STL file holds, into one surface; never refused);
 /// - faces that repeat a vertex (repair: the repetition removed, or the face dropped);
-/// - faces with more than three vertices (repair: triangulated, by
-///   `CGAL::Polygon_mesh_processing::triangulate_faces()`);
+/// - faces with more than three vertices (repair: triangulated by ear
+///   clipping on the coordinate plane closest to the face, with exact
+///   predicates; a face that is not a simple polygon there, or has more than
+///   4096 vertices, is refused);
 /// - duplicate faces, with the vertices of an earlier face in any order (repair: dropped);
 /// - edges shared by more than two faces, faces oriented inconsistently with a
 ///   neighbour, and pinched vertices (repair: `CGAL::Polygon_mesh_processing::orient_polygon_soup()`,
@@ -269,16 +250,8 @@ Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Mesh_repa
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_file_size}
-///     \cgalParamDescription{the largest file accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{1 GiB}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{error_message}
-///     \cgalParamDescription{a `std::string` that receives, on failure, the reason: which face, vertex or line, and what is wrong}
-///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
+///   \pvfParamMaximumFileSize
+///   \pvfParamErrorMessage{its place (face, vertex or line)}
 /// \cgalNamedParamsEnd
 ///
 /// \returns `Error_code::SUCCESS`, or the reason of the refusal: `CANNOT_OPEN_FILE`, `FILE_TOO_LARGE`,

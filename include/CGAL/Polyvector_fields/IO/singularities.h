@@ -233,22 +233,9 @@ Error_code write_singularities(const std::string& filename, const TriangleMesh& 
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{expected_degree}
-///     \cgalParamDescription{the degree the file must have
-///       (`CGAL::Polyvector_fields::parameters::expected_degree(N)`)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{`0`: any degree is accepted}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_file_size}
-///     \cgalParamDescription{the largest input accepted, in bytes (`Error_code::FILE_TOO_LARGE` beyond)}
-///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{1 GiB}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{error_message}
-///     \cgalParamDescription{a `std::string` that receives, on failure, the reason and its line}
-///     \cgalParamType{`std::string&`, given with `Polyvector_fields::parameters::error_message()`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
+///   \pvfParamExpectedDegree
+///   \pvfParamMaximumFileSize
+///   \pvfParamErrorMessage{its line}
 /// \cgalNamedParamsEnd
 ///
 /// \returns

@@ -83,17 +83,34 @@ inline void append_scalar_header(std::string& text, const std::string& name, con
 }
 
 // Builds the whole file. `is_constrained` is null when no constraint list is given.
+// Turns a list of constrained faces into one flag per face.
+template <typename TriangleMesh>
+Error_code constrained_flags(const TriangleMesh& tm,
+                             const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& list,
+                             std::vector<bool>& flags)
+{
+  const auto faces = face_list(tm);
+  const auto face_index = make_index(faces);
+  std::vector<bool> result(faces.size(), false);
+  for(const auto f : list)
+  {
+    std::size_t id = 0;
+    if(!face_index.find(f, id))
+      return Error_code::INVALID_FACE;
+    result[id] = true;
+  }
+  flags = std::move(result);
+  return Error_code::SUCCESS;
+}
+
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename NamedParameters>
 Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                         const SingularityRange& singularities,
-                         const Face_scalar_arrays& face_scalars,
-                         const std::vector<bool>* is_constrained,
-                         const NamedParameters& np,
-                         std::string& out)
+                         const SingularityRange& singularities, const NamedParameters& np, std::string& out)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using boost::get;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
   if(N == 0)
     return Error_code::INVALID_DEGREE;
@@ -102,6 +119,23 @@ Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N
   const std::size_t F = faces.size();
   if(F == 0)
     return Error_code::EMPTY_MESH;
+  static const Face_scalar_arrays no_arrays;
+  const Face_scalar_arrays& face_scalars = *choose_parameter(
+    get_parameter(np, Polyvector_fields::internal_np::face_scalars), &no_arrays);
+  // The constrained faces, as a list or as one flag per face.
+  const std::vector<bool>* flags =
+    choose_parameter(get_parameter(np, Polyvector_fields::internal_np::is_constrained), static_cast<const std::vector<bool>*>(nullptr));
+  const std::vector<face_descriptor>* list = choose_parameter(
+    get_parameter(np, Polyvector_fields::internal_np::constrained_faces), static_cast<const std::vector<face_descriptor>*>(nullptr));
+  std::vector<bool> list_flags;
+  if(list != nullptr)
+  {
+    const Error_code code = constrained_flags(tm, *list, list_flags);
+    if(code != Error_code::SUCCESS)
+      return code;
+    flags = &list_flags;
+  }
+  const std::vector<bool>* is_constrained = flags;
   if(is_constrained != nullptr && is_constrained->size() != F)
     return Error_code::INVALID_PARAMETER;
 
@@ -266,26 +300,6 @@ Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N
   return Error_code::SUCCESS;
 }
 
-// Turns a list of constrained faces into one flag per face.
-template <typename TriangleMesh>
-Error_code constrained_flags(const TriangleMesh& tm,
-                             const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& list,
-                             std::vector<bool>& flags)
-{
-  const auto faces = face_list(tm);
-  const auto face_index = make_index(faces);
-  std::vector<bool> result(faces.size(), false);
-  for(const auto f : list)
-  {
-    std::size_t id = 0;
-    if(!face_index.find(f, id))
-      return Error_code::INVALID_FACE;
-    result[id] = true;
-  }
-  flags = std::move(result);
-  return Error_code::SUCCESS;
-}
-
 } // namespace internal
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -305,8 +319,9 @@ Error_code constrained_flags(const TriangleMesh& tm,
 ///     face, in world coordinates (zero on the singularity cells);
 ///   - `SCALARS singularity_index double`: `k/N` on each singularity cell, `0`
 ///     on the triangles;
-///   - `SCALARS is_constrained int` (only if a constraint list or flag vector is
-///     given): `1` on constrained faces, `0` elsewhere and on singularity cells;
+///   - `SCALARS is_constrained int` (only if `constrained_faces` or
+///     `is_constrained` is given): `1` on constrained faces, `0` elsewhere and
+///     on singularity cells;
 ///   - one `SCALARS <name> double` per entry of `face_scalars`: its values on
 ///     the triangles, `0` on singularity cells.
 ///
@@ -331,21 +346,31 @@ Error_code constrained_flags(const TriangleMesh& tm,
 /// \param root_map the `N` vectors of each face
 /// \param N the number of vectors per face
 /// \param singularities the singular vertices, whose index is `index_numerator / N`
-/// \param face_scalars named per-face arrays of `num_faces` values each, in the
-///        order of `faces(tm)`, for example
-///        `{ {"conjugacy_deviation", deviation}, {"min_angle_degrees", angles} }`.
-///        Names use only letters, digits, `_`, `-` and `.` (at most 200 characters)
-///        and must differ from each other and from the arrays above.
-/// \param constrained_faces the constrained faces; duplicates are allowed
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-///                    as key type and `%Point_3` as value type}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNBegin{face_scalars}
+///     \cgalParamDescription{named per-face arrays of `num_faces` values each, in the order of `faces(tm)`,
+///       for example `{ {"conjugacy_deviation", deviation}, {"min_angle_degrees", angles} }`. Names use
+///       only letters, digits, `_`, `-` and `.` (at most 200 characters) and must differ from each other
+///       and from the arrays above. Given with `Polyvector_fields::parameters::face_scalars()`, which keeps a
+///       reference: the arrays must outlive the call}
+///     \cgalParamType{`Face_scalar_arrays`}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{constrained_faces}
+///     \cgalParamDescription{the constrained faces (duplicates are allowed), for the `is_constrained` array;
+///       given with `Polyvector_fields::parameters::constrained_faces()`, which keeps a reference}
+///     \cgalParamType{`std::vector<face_descriptor>`}
+///     \cgalParamDefault{none: no `is_constrained` array}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{is_constrained}
+///     \cgalParamDescription{the same as one flag per face, in the order of `faces(tm)` (ignored when
+///       `constrained_faces` is given); given with `Polyvector_fields::parameters::is_constrained()`, which keeps a reference}
+///     \cgalParamType{`std::vector<bool>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
 /// \cgalNamedParamsEnd
 ///
 /// \returns
@@ -366,67 +391,11 @@ Error_code constrained_flags(const TriangleMesh& tm,
 /// \sa `write_rawfield()`, `write_singularities()`
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
-                     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& constrained_faces,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  std::vector<bool> flags;
-  Error_code code = internal::constrained_flags(tm, constrained_faces, flags);
-  if(code != Error_code::SUCCESS)
-    return code;
-  std::string text;
-  code = internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &flags, np, text);
-  if(code != Error_code::SUCCESS)
-    return code;
-  return internal::write_to_stream(os, text);
-}
-
-/// \ingroup PkgPolyvectorFieldsIO
-///
-/// writes a legacy VTK file with an `is_constrained` array given as one flag
-/// per face, in the order of `faces(tm)` (`is_constrained.size()` must be the
-/// number of faces); otherwise as the overload that takes a list of constrained faces.
-template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
-                     const std::vector<bool>& is_constrained,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+                     const SingularityRange& singularities, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  const Error_code code =
-    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &is_constrained, np, text);
-  if(code != Error_code::SUCCESS)
-    return code;
-  return internal::write_to_stream(os, text);
-}
-
-/// \ingroup PkgPolyvectorFieldsIO
-///
-/// writes a legacy VTK file with extra per-face arrays and no `is_constrained`
-/// array; otherwise as the overload that takes a list of constrained faces.
-template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  std::string text;
-  const Error_code code =
-    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, nullptr, np, text);
-  if(code != Error_code::SUCCESS)
-    return code;
-  return internal::write_to_stream(os, text);
-}
-
-/// \ingroup PkgPolyvectorFieldsIO
-///
-/// writes a legacy VTK file with the field and its singularities only;
-/// otherwise as the overload that takes a list of constrained faces.
-template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  return write_vtk(os, tm, root_map, N, singularities, Face_scalar_arrays(), np);
+  const Error_code code = internal::vtk_to_string(tm, root_map, N, singularities, np, text);
+  return code != Error_code::SUCCESS ? code : internal::write_to_stream(os, text);
 }
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -441,66 +410,11 @@ Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map,
 ///          the file cannot be created, written or renamed.
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
-                     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& constrained_faces,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  std::vector<bool> flags;
-  Error_code code = internal::constrained_flags(tm, constrained_faces, flags);
-  if(code != Error_code::SUCCESS)
-    return code;
-  std::string text;
-  code = internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &flags, np, text);
-  if(code != Error_code::SUCCESS)
-    return code;
-  return internal::write_file_atomically(filename, text);
-}
-
-/// \ingroup PkgPolyvectorFieldsIO
-///
-/// writes a legacy VTK file to `filename`, with constraints given as one flag
-/// per face; see the stream overloads.
-template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
-                     const std::vector<bool>& is_constrained,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+                     const SingularityRange& singularities, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
-  const Error_code code =
-    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, &is_constrained, np, text);
-  if(code != Error_code::SUCCESS)
-    return code;
-  return internal::write_file_atomically(filename, text);
-}
-
-/// \ingroup PkgPolyvectorFieldsIO
-///
-/// writes a legacy VTK file to `filename` with extra per-face arrays and no
-/// `is_constrained` array; see the stream overloads.
-template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities, const Face_scalar_arrays& face_scalars,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  std::string text;
-  const Error_code code =
-    internal::vtk_to_string(tm, root_map, N, singularities, face_scalars, nullptr, np, text);
-  if(code != Error_code::SUCCESS)
-    return code;
-  return internal::write_file_atomically(filename, text);
-}
-
-/// \ingroup PkgPolyvectorFieldsIO
-///
-/// writes a legacy VTK file to `filename` with the field and its
-/// singularities only; see the stream overloads.
-template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
-                     const SingularityRange& singularities,
-                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  return write_vtk(filename, tm, root_map, N, singularities, Face_scalar_arrays(), np);
+  const Error_code code = internal::vtk_to_string(tm, root_map, N, singularities, np, text);
+  return code != Error_code::SUCCESS ? code : internal::write_file_atomically(filename, text);
 }
 
 } // namespace IO

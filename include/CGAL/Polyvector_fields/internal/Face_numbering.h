@@ -27,7 +27,8 @@ template <typename Descriptor>
 struct Has_idx<Descriptor, std::void_t<decltype(std::size_t(std::declval<const Descriptor&>().idx()))> >
   : std::true_type {};
 
-// Numbers descriptors (faces or vertices) 0..n-1 in the order they are added.
+// Numbers descriptors (faces or vertices) 0..n-1 in the order they are added:
+// the one numbering of the package (tangent bundle, file formats).
 //
 // Descriptors that expose a dense `idx()` (Surface_mesh, OpenMesh) are looked
 // up in a vector indexed by `idx()`, sized by the largest index seen, so a
@@ -50,6 +51,14 @@ public:
     const std::size_t k = std::size_t(d.idx());
     return k < m_index.size() && m_index[k] != std::size_t(-1);
   }
+  // The number of a descriptor that may be unknown (stale, null): false if it is.
+  bool find(const Descriptor& d, std::size_t& number) const
+  {
+    if(!contains(d))
+      return false;
+    number = (*this)(d);
+    return true;
+  }
   std::size_t size() const { return m_count; }
 
 private:
@@ -64,6 +73,14 @@ public:
   void add(const Descriptor& d) { m_index.emplace(d, m_index.size()); }
   std::size_t operator()(const Descriptor& d) const { return m_index.at(d); }
   bool contains(const Descriptor& d) const { return m_index.count(d) != 0; }
+  bool find(const Descriptor& d, std::size_t& number) const
+  {
+    const auto it = m_index.find(d);
+    if(it == m_index.end())
+      return false;
+    number = it->second;
+    return true;
+  }
   std::size_t size() const { return m_index.size(); }
 
 private:

@@ -41,6 +41,8 @@
 // alive while the factorizations of a system are computed or used, whether
 // in parallel or not (for CHOLMOD it keeps OpenBLAS on one thread).
 
+#include <CGAL/Polyvector_fields/internal/types.h>
+
 #include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Sparse>
@@ -54,10 +56,6 @@
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
-
-typedef std::complex<double> Complex;
-typedef Eigen::SparseMatrix<Complex> Sparse_matrix;
-typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Dense_vector;
 
 // A fill-reducing permutation P shared by factorizations of matrices with one
 // pattern; they factor P A P^T.

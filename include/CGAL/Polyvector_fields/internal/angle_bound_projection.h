@@ -9,10 +9,11 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_ANGLE_BOUND_PROJECTION_H
 
 // Local step of the angle-bounded frame-field iterations (paper Section 4.2;
-// NOTES.md Section 6), as per-face arithmetic on the two vectors u, v of a
+// the user manual's section "Angle-bounded frame fields"), as per-face arithmetic on the two vectors u, v of a
 // frame {u, v, -u, -v}, written as complex numbers in the face's frame.
 
 #include <CGAL/assertions.h>
+#include <CGAL/number_type_config.h>
 
 #include <cmath>
 #include <complex>
@@ -33,7 +34,7 @@ namespace internal {
 inline double smallest_frame_angle(std::complex<double> u, std::complex<double> v)
 {
   if(u == 0. || v == 0.)
-    return 2. * std::atan(1.);
+    return 0.5 * CGAL_PI;
   const std::complex<double> p = std::conj(u) * v; // |u||v| e^{i (arg v - arg u)}
   return std::atan2(std::abs(p.imag()), std::abs(p.real()));
 }
@@ -57,7 +58,7 @@ inline double smallest_frame_angle(std::complex<double> u, std::complex<double> 
 inline std::pair<std::complex<double>, std::complex<double> >
 enforce_angle_bound(std::complex<double> u, std::complex<double> v, double theta_min)
 {
-  CGAL_precondition(theta_min > 0. && theta_min <= 2. * std::atan(1.) * (1. + 1e-15));
+  CGAL_precondition(theta_min > 0. && theta_min <= 0.5 * CGAL_PI * (1. + 1e-15));
 
   if(u == 0. || v == 0.)
     return std::make_pair(u, v);

@@ -9,17 +9,16 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_CONJUGACY_PROJECTION_H
 
 // Local step of the conjugate frame-field iterations (paper Section 4.3 and
-// Appendix A; NOTES.md Section 5): the projection of a pair of tangent vectors
+// Appendix A; the user manual's section "Conjugate frame fields"): the projection of a pair of tangent vectors
 // (u0, v0) of one face onto the set of pairs that are conjugate with respect to
 // the face's shape operator S, i.e. onto the quadric u^T S v = 0.
 //
 // Everything here is per-face arithmetic in the face's orthonormal frame; no
 // mesh is involved. A complex number x + iy is the vector (x, y) of the frame.
 
-#include <CGAL/assertions.h>
+#include <CGAL/Polyvector_fields/internal/curvature_tensor.h>
 
-#include <Eigen/Core>
-#include <Eigen/Eigenvalues>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
@@ -135,11 +134,11 @@ inline double shifted_denominator(double s_j, double s_m, double tau)
   return ((s_j - s_m) + tau * s_m) / s_j;
 }
 
-// h_j(tau) = tau^2 * secular(lambda): no pole at tau = 0, same roots as the
-// secular equation elsewhere. Also returns `magnitude`, the sum of the absolute
-// values of its terms, which bounds its round-off. Returns false at another
-// pole.
-inline bool evaluate_shifted(const Problem& P, std::size_t j, double tau, double& h, double& dh,
+// h_j(tau) = tau^2 f(lambda), where f(lambda) = sum_m Z_m s_m / (1 + lambda s_m)^2
+// is the secular function and tau = 1 + lambda s_j: no pole at tau = 0, the
+// sign of f for tau > 0. Also returns `magnitude`, the sum of the absolute
+// values of its terms, which bounds its round-off.
+inline void evaluate_shifted(const Problem& P, std::size_t j, double tau, double& h, double& dh,
                              double& magnitude)
 {
   const double s_j = P.groups[j].s;
@@ -149,9 +148,7 @@ inline bool evaluate_shifted(const Problem& P, std::size_t j, double tau, double
     if(m == j)
       continue;
     const double s_m = P.groups[m].s;
-    const double d = shifted_denominator(s_j, s_m, tau);
-    if(d == 0.)
-      return false;
+    const double d = shifted_denominator(s_j, s_m, tau); // > 0 inside the interval
     const double q = P.groups[m].Z * s_m / (d * d);
     R += q;
     R_abs += std::abs(q);
@@ -160,41 +157,30 @@ inline bool evaluate_shifted(const Problem& P, std::size_t j, double tau, double
   h = P.groups[j].Z * s_j + tau * tau * R;
   dh = 2. * tau * R + tau * tau * dR;
   magnitude = std::abs(P.groups[j].Z * s_j) + tau * tau * R_abs;
-  return std::isfinite(h) && std::isfinite(dh);
 }
 
-// Damped Newton iteration on h_j, from tau. Stops when |h_j| is at its
-// round-off level, when the step is below one ulp of tau, or when |h_j| stops
-// decreasing.
-inline double newton_shifted(const Problem& P, std::size_t j, double tau)
+// The root tau in (0, 1] of h_j, given the sign `sign_at_zero` of f next to
+// the pole (tau -> 0+) and the opposite sign at tau = 1 (lambda = 0): Newton
+// steps inside a bracket that shrinks at every step, bisection (geometric once
+// the bracket spans orders of magnitude) when a step leaves it.
+inline double secular_root(const Problem& P, std::size_t j, double sign_at_zero)
 {
   const double eps = std::numeric_limits<double>::epsilon();
-  double h = 0., dh = 0., magnitude = 0.;
-  if(!evaluate_shifted(P, j, tau, h, dh, magnitude))
-    return tau;
-  for(int iteration = 0; iteration < 100; ++iteration)
+  double low = 0., high = 1., tau = 1.;
+  for(int iteration = 0; iteration < 2000; ++iteration)
   {
-    if(std::abs(h) <= 4. * eps * magnitude || dh == 0.)
+    double h = 0., dh = 0., magnitude = 0.;
+    evaluate_shifted(P, j, tau, h, dh, magnitude);
+    if(std::abs(h) <= 4. * eps * magnitude)
       break;
-    double step = h / dh;
-    bool accepted = false;
-    for(int halving = 0; halving < 30; ++halving)
-    {
-      const double tau_new = tau - step;
-      double h_new = 0., dh_new = 0., magnitude_new = 0.;
-      if(evaluate_shifted(P, j, tau_new, h_new, dh_new, magnitude_new) && std::abs(h_new) < std::abs(h))
-      {
-        tau = tau_new;
-        h = h_new;
-        dh = dh_new;
-        magnitude = magnitude_new;
-        accepted = true;
-        break;
-      }
-      step *= 0.5;
-    }
-    if(!accepted || std::abs(step) <= eps * std::abs(tau))
+    (h * sign_at_zero > 0. ? low : high) = tau;
+    if(high - low <= 2. * eps * high)
       break;
+    double next = tau - h / dh;
+    if(!(next > low && next < high))
+      next = (low > 0. && high > 4. * low) ? std::sqrt(low * high)
+                                           : (low > 0. ? 0.5 * (low + high) : 0.25 * high);
+    tau = next;
   }
   return tau;
 }
@@ -261,183 +247,6 @@ inline bool pole_point(const Problem& P, std::size_t j, Vec4& y)
   return is_finite(y);
 }
 
-// Real polynomial, coefficients from degree 0 up.
-typedef std::vector<double> Polynomial;
-
-inline Polynomial multiply(const Polynomial& p, const Polynomial& q)
-{
-  Polynomial r(p.size() + q.size() - 1, 0.);
-  for(std::size_t i = 0; i < p.size(); ++i)
-    for(std::size_t k = 0; k < q.size(); ++k)
-      r[i + k] += p[i] * q[k];
-  return r;
-}
-
-inline void evaluate(const Polynomial& p, double x, double& value, double& derivative)
-{
-  value = 0.;
-  derivative = 0.;
-  for(std::size_t i = p.size(); i-- > 0;)
-  {
-    derivative = derivative * x + value;
-    value = value * x + p[i];
-  }
-}
-
-// Numerator of the secular equation sum_m Z_m s_m / (1 + lambda s_m)^2 = 0,
-// multiplied by prod_j (1 + lambda s_j)^2 over the distinct non-zero s_j:
-// degree at most 2 (#groups - 1) <= 6.
-inline Polynomial secular_numerator(const Problem& P)
-{
-  Polynomial p(1, 0.);
-  for(std::size_t m = 0; m < P.groups.size(); ++m)
-  {
-    Polynomial term(1, P.groups[m].Z * P.groups[m].s);
-    for(std::size_t j = 0; j < P.groups.size(); ++j)
-    {
-      if(j == m)
-        continue;
-      const double s_j = P.groups[j].s;
-      term = multiply(term, Polynomial{1., 2. * s_j, s_j * s_j});
-    }
-    if(term.size() > p.size())
-      p.resize(term.size(), 0.);
-    for(std::size_t i = 0; i < term.size(); ++i)
-      p[i] += term[i];
-  }
-  return p;
-}
-
-// Real parts of the roots of p (degree at most 6) whose imaginary part is small, from the
-// eigenvalues of the (balanced) companion matrix. The threshold is generous on
-// purpose: a double root comes out as a complex pair with an imaginary part of
-// order sqrt(eps), and a spurious seed costs nothing since every candidate is
-// made feasible and compared by distance.
-inline std::vector<double> real_roots(Polynomial p)
-{
-  std::vector<double> roots;
-  double scale = 0.;
-  for(double c : p)
-    scale = (std::max)(scale, std::abs(c));
-  if(scale == 0.) // identically zero: no information
-    return roots;
-  // Drop negligible leading coefficients: their roots lie beyond |lambda| ~ 1e13,
-  // where the stationary point is, to that accuracy, the singular point of the
-  // quadric, which is a candidate anyway.
-  std::size_t n = p.size() - 1;
-  while(n > 0 && std::abs(p[n]) <= 1e-13 * scale)
-    --n;
-  CGAL_assertion(n <= 6); // 4 groups at most
-  if(n == 0 || n > 6)
-    return roots;
-  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6> Companion; // no heap
-  Companion C = Companion::Zero(n, n);
-  for(std::size_t i = 1; i < n; ++i)
-    C(i, i - 1) = 1.;
-  for(std::size_t i = 0; i < n; ++i)
-    C(i, n - 1) = -p[i] / p[n];
-  // Balancing by powers of two (Parlett-Reinsch): similar matrix, exact scaling.
-  for(bool converged = false; !converged;)
-  {
-    converged = true;
-    for(Eigen::Index i = 0; i < Eigen::Index(n); ++i)
-    {
-      double col = 0., row = 0.;
-      for(Eigen::Index k = 0; k < Eigen::Index(n); ++k)
-        if(k != i)
-        {
-          col += std::abs(C(k, i));
-          row += std::abs(C(i, k));
-        }
-      if(col == 0. || row == 0.)
-        continue;
-      double f = 1.;
-      const double total = col + row;
-      while(col < row / 2.) { col *= 2.; row /= 2.; f *= 2.; }
-      while(col >= row * 2.) { col /= 2.; row *= 2.; f /= 2.; }
-      if(col + row < 0.95 * total)
-      {
-        converged = false;
-        C.col(i) *= f;
-        C.row(i) /= f;
-      }
-    }
-  }
-  Eigen::EigenSolver<Companion> solver(C, false);
-  if(solver.info() != Eigen::Success)
-    return roots;
-  for(Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i)
-  {
-    const std::complex<double> r = solver.eigenvalues()[i];
-    if(std::isfinite(r.real()) && std::abs(r.imag()) <= 1e-4 * (std::max)(1., std::abs(r.real())))
-    {
-      // Guarded Newton polish on the polynomial itself.
-      double x = r.real(), value = 0., derivative = 0.;
-      evaluate(p, x, value, derivative);
-      for(int iteration = 0; iteration < 20 && value != 0. && derivative != 0.; ++iteration)
-      {
-        const double x_new = x - value / derivative;
-        double value_new = 0., derivative_new = 0.;
-        evaluate(p, x_new, value_new, derivative_new);
-        if(!(std::abs(value_new) < std::abs(value)))
-          break;
-        x = x_new;
-        value = value_new;
-        derivative = derivative_new;
-      }
-      roots.push_back(x);
-    }
-  }
-  return roots;
-}
-
-// Index of the group whose pole -1/s is nearest to lambda.
-inline std::size_t nearest_pole(const Problem& P, double lambda)
-{
-  std::size_t best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for(std::size_t j = 0; j < P.groups.size(); ++j)
-  {
-    const double d = std::abs(lambda + 1. / P.groups[j].s);
-    if(d < best_distance)
-    {
-      best_distance = d;
-      best = j;
-    }
-  }
-  return best;
-}
-
-// Refines a root of the secular equation from (j, tau), switching to the
-// variable of the nearest pole when it changes, and returns the stationary
-// point there.
-inline bool refined_stationary_point(const Problem& P, std::size_t j, double tau, Vec4& y)
-{
-  for(int pass = 0; pass < 4; ++pass)
-  {
-    tau = newton_shifted(P, j, tau);
-    // Which denominator is smallest now? Re-express in its pole's variable.
-    std::size_t j_best = j;
-    double smallest = std::abs(tau);
-    for(std::size_t m = 0; m < P.groups.size(); ++m)
-    {
-      if(m == j)
-        continue;
-      const double d = std::abs(shifted_denominator(P.groups[j].s, P.groups[m].s, tau));
-      if(d < 0.5 * smallest)
-      {
-        smallest = d;
-        j_best = m;
-      }
-    }
-    if(j_best == j)
-      break;
-    tau = shifted_denominator(P.groups[j].s, P.groups[j_best].s, tau);
-    j = j_best;
-  }
-  return stationary_point(P, j, tau, y);
-}
-
 // Closed-form eigen-decomposition of H = 1/2 [[0, S], [S, 0]]. With
 // S = k1 d1 d1^T + k2 d2 d2^T, H has the eigenpairs
 //   k1/2: (d1, d1)/sqrt2,  -k1/2: (d1, -d1)/sqrt2,
@@ -446,24 +255,8 @@ inline bool refined_stationary_point(const Problem& P, std::size_t j, double tau
 // eigenvalues (parabolic S) go to the kernel.
 inline void decompose(Problem& P)
 {
-  const double mean = 0.5 * (P.a + P.c);
-  const double half_difference = 0.5 * (P.a - P.c);
-  const double radius = std::hypot(half_difference, P.b);
-  double k1 = mean + radius, k2 = mean - radius;
-  // The eigenvalue of smaller magnitude loses its relative accuracy to
-  // cancellation when it is much smaller than the other one (nearly parabolic
-  // S). It is then recomputed as det(S) / k_big, with det(S) = ac - b^2
-  // evaluated by Kahan's fma scheme, which is accurate to a few ulps.
-  double& k_small = (mean >= 0.) ? k2 : k1;
-  const double k_big = (mean >= 0.) ? k1 : k2;
-  if(std::abs(k_small) < 0.125 * std::abs(k_big))
-  {
-    const double bb = P.b * P.b;
-    const double bb_error = std::fma(-P.b, P.b, bb); // bb - b^2, exactly
-    const double det = std::fma(P.a, P.c, -bb) + bb_error;
-    k_small = det / k_big;
-  }
-  const double phi = 0.5 * std::atan2(2. * P.b, P.a - P.c);
+  const Symmetric_eigen_2 eigen = symmetric_eigen_2(P.a, P.b, P.c);
+  const double k1 = eigen.lambda_max, k2 = eigen.lambda_min, phi = eigen.angle;
   const double c = std::cos(phi), s = std::sin(phi);
   const double r = 1. / std::sqrt(2.);
   // d1 = (c, s), d2 = (-s, c)
@@ -514,24 +307,22 @@ inline int binary_exponent(double x)
 /// respect to the symmetric 2x2 shape operator `S` (row-major): returns the
 /// `(u, v)` that minimises `|u - u0|^2 + |v - v0|^2` subject to `u^T S v = 0`.
 ///
-/// Method (paper Appendix A, made precise in NOTES.md Section 5): with
+/// Method (paper Appendix A, made precise in the user manual): with
 /// `y = (u, v)` and `H = 1/2 [[0, S], [S, 0]] = U diag(s) U^T` (closed form),
 /// `z = U^T y0`, the stationary points are `y = U (I + lambda diag(s))^{-1} z`
-/// with `lambda` a real root of `sum_m z_m^2 s_m / (1 + lambda s_m)^2 = 0`.
-/// The numerator of that equation is a polynomial of degree at most 6; its real
-/// roots (companion matrix) seed a Newton iteration on the secular equation
-/// written in the shifted variable `tau = 1 + lambda s_j` of the nearest pole,
-/// which keeps the stationary point accurate for roots close to a pole. More
-/// Newton seeds: the two leading-order roots `tau = +-sqrt(-Z_j s_j / R_j(0))`
-/// next to each pole (a pair of roots that the polynomial cannot separate when
-/// `z` has almost no component in the eigenspace of `s_j`), and points between
-/// and beyond the poles. Further candidates: the pole points `lambda = -1/s_j`
-/// when `z` has no component in the eigenspace of `s_j` (that component is then
-/// free and its norm follows from the constraint), `y0` itself moved onto the
-/// quadric, and the singular point of the quadric nearest to `y0`. Every
-/// candidate is moved exactly onto the quadric (projection of `v` onto
-/// `(S u)^perp` or of `u` onto `(S v)^perp`, whichever moves less) and the
-/// candidate closest to `y0` is returned.
+/// with `lambda` a real root of the secular equation
+/// `f(lambda) = sum_m z_m^2 s_m / (1 + lambda s_m)^2 = 0`. The global minimiser
+/// is the one whose `I + lambda H` is positive semidefinite, that is
+/// `|lambda| <= 1/s_max` (the spectrum of `H` is `+-k1/2, +-k2/2`), where `f`
+/// decreases strictly: a single root, found by safeguarded Newton in the
+/// variable `tau = 1 + lambda s_j` of the pole it lies next to, which keeps the
+/// stationary point accurate when the root is close to that pole. When `z` has
+/// no component in the pole's eigenspace and `f` keeps its sign (the "hard
+/// case"), the minimiser is the pole point: that component is free and its
+/// norm follows from the constraint. The candidate is moved exactly onto the
+/// quadric (projection of `v` onto `(S u)^perp` or of `u` onto `(S v)^perp`,
+/// whichever moves less) and compared with two always-feasible fallbacks,
+/// `y0` moved onto the quadric and the singular point nearest to `y0`.
 ///
 /// Degenerate inputs: if `S = 0` or `(u0, v0)` is already conjugate up to
 /// round-off (`|u0^T S v0| <= 32 eps |S|_F |u0| |v0|`), `(u0, v0)` is returned
@@ -595,72 +386,6 @@ project_onto_conjugate_pair(const std::array<double, 4>& S_row_major,
 
   impl::decompose(P);
 
-  // Fast path. With a single quadratic constraint, the global minimiser is the
-  // stationary point whose multiplier makes I + lambda H positive semidefinite,
-  // i.e. lambda in the central interval (-1/s_max, -1/s_min) between the poles
-  // of the largest and the smallest eigenvalue of H. There the secular function
-  // f(lambda) = sum_g Z_g s_g / (1 + lambda s_g)^2 decreases strictly, from +inf
-  // to -inf when y0 has a component in both extreme eigenspaces, so it has
-  // exactly one root, found by Newton safeguarded by bisection. When an extreme
-  // component is (nearly) zero the root approaches a pole (the "hard case"),
-  // and the general method below takes over.
-  {
-    const impl::Eigen_group* largest = nullptr;
-    const impl::Eigen_group* smallest = nullptr;
-    double total = 0.;
-    for(const impl::Eigen_group& g : P.groups)
-    {
-      total += g.Z;
-      if(!largest || g.s > largest->s)
-        largest = &g;
-      if(!smallest || g.s < smallest->s)
-        smallest = &g;
-    }
-    for(int col : P.kernel_columns)
-      total += P.z[col] * P.z[col];
-    if(largest && smallest && largest->s > 0. && smallest->s < 0. &&
-       largest->Z > 1e-6 * total && smallest->Z > 1e-6 * total)
-    {
-      double low = -1. / largest->s, high = -1. / smallest->s, lambda = 0.;
-      for(int iteration = 0; iteration < 200; ++iteration)
-      {
-        double f = 0., df = 0.;
-        for(const impl::Eigen_group& g : P.groups)
-        {
-          const double d = 1. + lambda * g.s;
-          f += g.Z * g.s / (d * d);
-          df -= 2. * g.Z * g.s * g.s / (d * d * d);
-        }
-        if(f == 0.)
-          break;
-        (f > 0. ? low : high) = lambda;  // f decreases: the root is right of a positive value
-        double next = lambda - f / df;
-        if(!(next > low && next < high))
-          next = 0.5 * (low + high);
-        const double step = next - lambda;
-        lambda = next;
-        if(std::abs(step) <= 4. * std::numeric_limits<double>::epsilon() * (std::abs(lambda) + 1e-300))
-          break;
-      }
-      impl::Vec4 y = {{0., 0., 0., 0.}};
-      for(int col = 0; col < 4; ++col)
-      {
-        double eigenvalue = 0.;
-        for(const impl::Eigen_group& g : P.groups)
-          for(int k = 0; k < g.count; ++k)
-            if(g.column[k] == col)
-              eigenvalue = g.s;
-        const double w = P.z[col] / (1. + lambda * eigenvalue);
-        for(int i = 0; i < 4; ++i)
-          y[i] += w * P.U[col][i];
-      }
-      impl::make_conjugate(P, y);
-      if(impl::is_finite(y))
-        return { std::complex<double>(std::ldexp(y[0], y_exponent), std::ldexp(y[1], y_exponent)),
-                 std::complex<double>(std::ldexp(y[2], y_exponent), std::ldexp(y[3], y_exponent)) };
-    }
-  }
-
   impl::Vec4 best = P.y0;
   double best_distance = std::numeric_limits<double>::infinity();
   auto consider = [&](impl::Vec4 y)
@@ -676,8 +401,43 @@ project_onto_conjugate_pair(const std::array<double, 4>& S_row_major,
     }
   };
 
-  // Always-feasible fallbacks: y0 moved onto the quadric, and the singular
-  // point nearest to y0 (all components outside the kernel of H set to zero).
+  // The global minimiser has a multiplier lambda with I + lambda H positive
+  // semidefinite (one quadratic constraint: the S-lemma). The spectrum of H is
+  // symmetric, +-s_max, so lambda lies in [-1/s_max, 1/s_max], where the
+  // secular function f decreases strictly. Its root lies on the side of
+  // lambda = 0 where f changes sign, next to the pole of the group j with
+  // s_j = -sign(f(0)) s_max; it is sought in that pole's variable tau.
+  double f0 = 0.;
+  for(const impl::Eigen_group& g : P.groups)
+    f0 += g.Z * g.s;
+  std::size_t j = 0;
+  for(std::size_t m = 1; m < P.groups.size(); ++m)
+    if((f0 > 0. ? -1. : 1.) * P.groups[m].s > (f0 > 0. ? -1. : 1.) * P.groups[j].s)
+      j = m;
+  const double sign_at_zero = -(f0 > 0. ? 1. : -1.);
+  bool root_inside = true;
+  if(P.groups[j].Z == 0.)
+  {
+    // f(0+) = R_j(0), the sum over the other groups. If it does not have the
+    // sign that brackets a root, this is the hard case: the minimiser sits at
+    // the pole, with a free component in the eigenspace of s_j.
+    double R0 = 0.;
+    for(std::size_t m = 0; m < P.groups.size(); ++m)
+      if(m != j)
+      {
+        const double d = impl::shifted_denominator(P.groups[j].s, P.groups[m].s, 0.);
+        R0 += P.groups[m].Z * P.groups[m].s / (d * d);
+      }
+    root_inside = R0 * sign_at_zero > 0.;
+    impl::Vec4 y;
+    if(!root_inside && impl::pole_point(P, j, y))
+      consider(y);
+  }
+  impl::Vec4 y;
+  if(root_inside && impl::stationary_point(P, j, impl::secular_root(P, j, sign_at_zero), y))
+    consider(y);
+  // Safety nets against round-off: y0 moved onto the quadric, and the singular
+  // point nearest to y0 (the components outside the kernel of H set to zero).
   consider(P.y0);
   {
     impl::Vec4 y = {{0., 0., 0., 0.}};
@@ -685,58 +445,6 @@ project_onto_conjugate_pair(const std::array<double, 4>& S_row_major,
       for(int i = 0; i < 4; ++i)
         y[i] += P.z[col] * P.U[col][i];
     consider(y);
-  }
-
-  if(!P.groups.empty())
-  {
-    impl::Vec4 y;
-    // Roots of the secular numerator.
-    for(double lambda : impl::real_roots(impl::secular_numerator(P)))
-    {
-      const std::size_t j = impl::nearest_pole(P, lambda);
-      if(impl::refined_stationary_point(P, j, 1. + lambda * P.groups[j].s, y))
-        consider(y);
-    }
-    for(std::size_t j = 0; j < P.groups.size(); ++j)
-    {
-      // Pole with a free component.
-      if(P.groups[j].Z == 0.)
-      {
-        if(impl::pole_point(P, j, y))
-          consider(y);
-        continue;
-      }
-      // Near a pole, the two roots tau ~ +-sqrt(-Z_j s_j / R_j(0)): extra seeds,
-      // so that neither of a close pair of roots can be missed.
-      double R0 = 0.; // R_j(0) = sum over the other groups of Z_m s_m / (1 - s_m/s_j)^2
-      for(std::size_t m = 0; m < P.groups.size(); ++m)
-        if(m != j)
-        {
-          const double d = impl::shifted_denominator(P.groups[j].s, P.groups[m].s, 0.);
-          R0 += P.groups[m].Z * P.groups[m].s / (d * d);
-        }
-      const double tau2 = -P.groups[j].Z * P.groups[j].s / R0;
-      if(tau2 > 0. && std::isfinite(tau2))
-        for(double sign : {1., -1.})
-          if(impl::refined_stationary_point(P, j, sign * std::sqrt(tau2), y))
-            consider(y);
-    }
-    // Seeds between consecutive poles and beyond them.
-    std::vector<double> poles;
-    for(const impl::Eigen_group& g : P.groups)
-      poles.push_back(-1. / g.s);
-    std::sort(poles.begin(), poles.end());
-    std::vector<double> seeds;
-    for(std::size_t i = 0; i + 1 < poles.size(); ++i)
-      seeds.push_back(0.5 * (poles[i] + poles[i + 1]));
-    seeds.push_back(poles.front() - 1. - std::abs(poles.front()));
-    seeds.push_back(poles.back() + 1. + std::abs(poles.back()));
-    for(double lambda : seeds)
-    {
-      const std::size_t j = impl::nearest_pole(P, lambda);
-      if(impl::refined_stationary_point(P, j, 1. + lambda * P.groups[j].s, y))
-        consider(y);
-    }
   }
 
   return std::make_pair(std::complex<double>(std::ldexp(best[0], y_exponent), std::ldexp(best[1], y_exponent)),

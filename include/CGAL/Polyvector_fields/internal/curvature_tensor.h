@@ -9,10 +9,14 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_CURVATURE_TENSOR_H
 
 // Small dense helpers for curvature tensors: moving a tangent frame from one
-// plane to another, and the eigen-decomposition of a symmetric 2x2 matrix.
+// plane to another, and the eigen-decomposition of a symmetric 2x2 matrix
+// (also the shape operator's, in the conjugacy projection).
 
 #include <CGAL/Polyvector_fields/face_frames.h>
 
+#include <CGAL/number_type_config.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -46,31 +50,51 @@ inline std::array<double, 3> curvature_rotate(const std::array<double, 3>& v,
   return { c * v[0] + axv[0] + t * a[0], c * v[1] + axv[1] + t * a[1], c * v[2] + axv[2] + t * a[2] };
 }
 
-// Eigen-decomposition of the symmetric matrix [[s00, s01], [s01, s11]]:
-// lambda_max >= lambda_min, and the unit eigenvector of lambda_max is
-// (cos(angle), sin(angle)) with angle in (-pi/2, pi/2] (so its first
-// coordinate is never negative). Where the two eigenvalues are equal the
-// angle is 0.
-struct Curvature_eigen_2
+// Eigen-decomposition of the symmetric matrix [[a, b], [b, c]]: lambda_max >=
+// lambda_min, and the unit eigenvector of lambda_max is (cos(angle),
+// sin(angle)) with angle in (-pi/2, pi/2] (so its first coordinate is never
+// negative). Where the two eigenvalues are equal the angle is 0. The
+// eigenvalue of smaller magnitude loses its relative accuracy to cancellation
+// when it is much smaller than the other one (a nearly parabolic shape
+// operator): it is then recomputed as det / lambda_big, with the determinant
+// ac - b^2 evaluated by Kahan's fma scheme, accurate to a few ulps.
+struct Symmetric_eigen_2
 {
   double lambda_max;
   double lambda_min;
   double angle;
 };
 
-inline Curvature_eigen_2 curvature_eigen_2(double s00, double s01, double s11)
+inline Symmetric_eigen_2 symmetric_eigen_2(double a, double b, double c)
 {
-  const double mean = 0.5 * (s00 + s11);
-  const double half_difference = 0.5 * (s00 - s11);
-  const double radius = std::hypot(half_difference, s01);
-  Curvature_eigen_2 result;
+  // Scaled by a power of two first (exact), so that b^2 and ac cannot overflow
+  // or underflow; the eigenvalues are scaled back.
+  const double largest = (std::max)({ std::abs(a), std::abs(b), std::abs(c) });
+  const int e = (largest > 0 && std::isfinite(largest)) ? std::ilogb(largest) : 0;
+  a = std::ldexp(a, -e);
+  b = std::ldexp(b, -e);
+  c = std::ldexp(c, -e);
+  const double mean = 0.5 * (a + c);
+  const double half_difference = 0.5 * (a - c);
+  const double radius = std::hypot(half_difference, b);
+  Symmetric_eigen_2 result;
   result.lambda_max = mean + radius;
   result.lambda_min = mean - radius;
-  // The quadratic form at angle t is mean + half_difference cos(2t) + s01 sin(2t),
-  // largest where (cos 2t, sin 2t) is along (half_difference, s01).
-  result.angle = (radius > 0.) ? 0.5 * std::atan2(s01, half_difference) : 0.;
-  if(result.angle <= -0.5 * 3.14159265358979323846)
-    result.angle += 3.14159265358979323846;
+  double& small = (mean >= 0.) ? result.lambda_min : result.lambda_max;
+  const double big = (mean >= 0.) ? result.lambda_max : result.lambda_min;
+  if(std::abs(small) < 0.125 * std::abs(big))
+  {
+    const double bb = b * b;
+    const double bb_error = std::fma(-b, b, bb);  // bb - b^2, exactly
+    small = (std::fma(a, c, -bb) + bb_error) / big;
+  }
+  // The quadratic form at angle t is mean + half_difference cos(2t) + b sin(2t),
+  // largest where (cos 2t, sin 2t) is along (half_difference, b).
+  result.angle = (radius > 0.) ? 0.5 * std::atan2(b, half_difference) : 0.;
+  if(result.angle <= -0.5 * CGAL_PI)
+    result.angle += CGAL_PI;
+  result.lambda_max = std::ldexp(result.lambda_max, e);
+  result.lambda_min = std::ldexp(result.lambda_min, e);
   return result;
 }
 

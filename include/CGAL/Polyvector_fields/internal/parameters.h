@@ -28,6 +28,8 @@
 #include <cstddef>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #define CGAL_PVF_ADD_NAMED_PARAMETER(TAG_TYPE, TAG_VALUE, FUNCTION)                       \
   namespace CGAL { namespace Polyvector_fields {                                        \
@@ -74,12 +76,63 @@ CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)
 CGAL_PVF_ADD_NAMED_PARAMETER(anisotropy_threshold_t, anisotropy_threshold, anisotropy_threshold)
 CGAL_PVF_ADD_NAMED_PARAMETER(constrained_fraction_t, constrained_fraction, constrained_fraction)
 
+// Parameters that refer to an object of the caller instead of copying it:
+// the named parameter holds its address, and the object must outlive the call.
+#define CGAL_PVF_ADD_REFERENCE_PARAMETER(TAG_TYPE, TAG_VALUE, FUNCTION, ...)                  \
+  namespace CGAL { namespace Polyvector_fields {                                            \
+  namespace internal_np { enum TAG_TYPE { TAG_VALUE }; }                                    \
+  namespace parameters {                                                                    \
+  inline CGAL::Named_function_parameters<__VA_ARGS__*, internal_np::TAG_TYPE>              \
+  FUNCTION(__VA_ARGS__& value)                                                              \
+  { return CGAL::Named_function_parameters<__VA_ARGS__*, internal_np::TAG_TYPE>(&value); }  \
+  template <typename T, typename Tag, typename Base>                                        \
+  CGAL::Named_function_parameters<__VA_ARGS__*, internal_np::TAG_TYPE,                     \
+                                  CGAL::Named_function_parameters<T, Tag, Base> >           \
+  FUNCTION(__VA_ARGS__& value, const CGAL::Named_function_parameters<T, Tag, Base>& np)     \
+  {                                                                                         \
+    return CGAL::Named_function_parameters<__VA_ARGS__*, internal_np::TAG_TYPE,            \
+                                           CGAL::Named_function_parameters<T, Tag, Base> >(&value, np); \
+  }                                                                                         \
+  } } }
+
+/// `std::string&`: receives, when a reader fails, the reason and where it is in the input.
+CGAL_PVF_ADD_REFERENCE_PARAMETER(error_message_t, error_message, error_message, std::string)
+
+// The per-face arrays of `IO::write_vtk()`, named, and its constrained faces
+// as one flag per face (in the order of faces(tm)) or as a list of faces.
+CGAL_PVF_ADD_REFERENCE_PARAMETER(face_scalars_t, face_scalars, face_scalars,
+                                 const std::vector<std::pair<std::string, std::vector<double> > >)
+CGAL_PVF_ADD_REFERENCE_PARAMETER(is_constrained_t, is_constrained, is_constrained, const std::vector<bool>)
+
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal_np {
-enum error_message_t { error_message };
+enum constrained_faces_t { constrained_faces };
 } // namespace internal_np
+namespace parameters {
 
+template <typename FaceDescriptor>
+CGAL::Named_function_parameters<const std::vector<FaceDescriptor>*, internal_np::constrained_faces_t>
+constrained_faces(const std::vector<FaceDescriptor>& faces)
+{
+  return CGAL::Named_function_parameters<const std::vector<FaceDescriptor>*, internal_np::constrained_faces_t>(&faces);
+}
+
+template <typename FaceDescriptor, typename T, typename Tag, typename Base>
+CGAL::Named_function_parameters<const std::vector<FaceDescriptor>*, internal_np::constrained_faces_t,
+                                CGAL::Named_function_parameters<T, Tag, Base> >
+constrained_faces(const std::vector<FaceDescriptor>& faces, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return CGAL::Named_function_parameters<const std::vector<FaceDescriptor>*, internal_np::constrained_faces_t,
+                                         CGAL::Named_function_parameters<T, Tag, Base> >(&faces, np);
+}
+
+} // namespace parameters
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+namespace CGAL {
+namespace Polyvector_fields {
 namespace IO {
 namespace internal {
 // The default of the named parameter `maximum_file_size`: 1 GiB.
@@ -88,20 +141,6 @@ constexpr std::size_t default_maximum_file_size = std::size_t(1) << 30;
 } // namespace IO
 
 namespace parameters {
-
-/// a string that receives, when a reader fails, the reason and where it is in the input.
-inline CGAL::Named_function_parameters<std::string*, internal_np::error_message_t> error_message(std::string& message)
-{
-  return CGAL::Named_function_parameters<std::string*, internal_np::error_message_t>(&message);
-}
-
-template <typename T, typename Tag, typename Base>
-CGAL::Named_function_parameters<std::string*, internal_np::error_message_t, CGAL::Named_function_parameters<T, Tag, Base> >
-error_message(std::string& message, const CGAL::Named_function_parameters<T, Tag, Base>& np)
-{
-  return CGAL::Named_function_parameters<std::string*, internal_np::error_message_t,
-                                         CGAL::Named_function_parameters<T, Tag, Base> >(&message, np);
-}
 
 // CGAL's own parameters that this package reads, so that a user can name every
 // parameter through CGAL::Polyvector_fields::parameters.

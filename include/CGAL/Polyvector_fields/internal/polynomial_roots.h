@@ -31,6 +31,8 @@
 //   power-of-two scaling, with a guarded Newton polish; Aberth iteration is
 //   the fallback should the eigensolver not converge.
 
+#include <CGAL/Polyvector_fields/internal/types.h>
+
 #include <CGAL/assertions.h>
 
 #include <Eigen/Core>
@@ -50,63 +52,61 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-using Polynomial_complex = std::complex<double>;
-
 // ---------------------------------------------------------------------------
 // Small complex helpers
 // ---------------------------------------------------------------------------
 
-inline double max_abs_component(const Polynomial_complex& z)
+inline double max_abs_component(const Complex& z)
 {
   return (std::max)(std::abs(z.real()), std::abs(z.imag()));
 }
 
-inline bool is_zero(const Polynomial_complex& z)
+inline bool is_zero(const Complex& z)
 {
   return z.real() == 0. && z.imag() == 0.;
 }
 
-inline bool is_finite(const Polynomial_complex& z)
+inline bool is_finite(const Complex& z)
 {
   return std::isfinite(z.real()) && std::isfinite(z.imag());
 }
 
-inline Polynomial_complex complex_mul(const Polynomial_complex& a, const Polynomial_complex& b)
+inline Complex complex_mul(const Complex& a, const Complex& b)
 {
-  return Polynomial_complex(a.real() * b.real() - a.imag() * b.imag(),
+  return Complex(a.real() * b.real() - a.imag() * b.imag(),
                             a.real() * b.imag() + a.imag() * b.real());
 }
 
-inline Polynomial_complex complex_nan()
+inline Complex complex_nan()
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return Polynomial_complex(nan, nan);
+  return Complex(nan, nan);
 }
 
 // x * 2^k for both components (exact unless the result over- or underflows)
-inline Polynomial_complex complex_ldexp(const Polynomial_complex& z, int k)
+inline Complex complex_ldexp(const Complex& z, int k)
 {
-  return Polynomial_complex(std::ldexp(z.real(), k), std::ldexp(z.imag(), k));
+  return Complex(std::ldexp(z.real(), k), std::ldexp(z.imag(), k));
 }
 
 // Principal square root (real part >= 0). In the range 2^-500 < max(|x|,|y|) < 2^500
 // the naive modulus sqrt(x^2 + y^2) neither overflows nor underflows, and
 // r + |x| has no cancellation; outside that range the library routine is used.
-inline Polynomial_complex principal_sqrt(const Polynomial_complex& z)
+inline Complex principal_sqrt(const Complex& z)
 {
   const double x = z.real(), y = z.imag();
   const double m = (std::max)(std::abs(x), std::abs(y));
   if(!(m > 0x1p-500 && m < 0x1p+500))
   {
     if(m == 0.)
-      return Polynomial_complex(0., 0.);
+      return Complex(0., 0.);
     return std::sqrt(z);
   }
   const double r = std::sqrt(x * x + y * y);
   const double t = std::sqrt(0.5 * (r + std::abs(x))); // t > 0 since r >= m > 0
   if(x >= 0.)
-    return Polynomial_complex(t, 0.5 * y / t);
-  return Polynomial_complex(0.5 * std::abs(y) / t, std::copysign(t, y));
+    return Complex(t, 0.5 * y / t);
+  return Complex(0.5 * std::abs(y) / t, std::copysign(t, y));
 }
 
 // `condition ? a : b` through bit masks: compilers tend to turn a ternary on
@@ -132,13 +132,13 @@ inline double sign_factor(bool negative)
 // A square root (either one) of x + iy, 2^-500 < max(|x|, |y|) < 2^500, without
 // jumps: (t, h) for x >= 0, (h, t) for x < 0, with t = sqrt((|z| + |x|)/2),
 // h = y / (2t); for x < 0, (h + it)^2 = h^2 - t^2 + i y = x + i y.
-inline Polynomial_complex some_sqrt_in_range(double x, double y)
+inline Complex some_sqrt_in_range(double x, double y)
 {
   const double r = std::sqrt(x * x + y * y);
   const double t = std::sqrt(0.5 * (r + std::abs(x)));
   const double h = 0.5 * y / t;
   const bool negative = x < 0.;
-  return Polynomial_complex(select_double(negative, h, t), select_double(negative, t, h));
+  return Complex(select_double(negative, h, t), select_double(negative, t, h));
 }
 
 // ---------------------------------------------------------------------------
@@ -150,13 +150,13 @@ inline Polynomial_complex some_sqrt_in_range(double x, double y)
 // sign is therefore exact. Each vector is first scaled by a power of two (which
 // does not change the sign) so that its largest component is in [1, 2): this
 // keeps the products away from overflow and underflow.
-inline int orientation_sign_exact(const Polynomial_complex& a, const Polynomial_complex& b)
+inline int orientation_sign_exact(const Complex& a, const Complex& b)
 {
   const double ma = max_abs_component(a), mb = max_abs_component(b);
   if(!(ma > 0.) || !(mb > 0.) || !std::isfinite(ma) || !std::isfinite(mb))
     return 0;
-  const Polynomial_complex sa = complex_ldexp(a, -std::ilogb(ma));
-  const Polynomial_complex sb = complex_ldexp(b, -std::ilogb(mb));
+  const Complex sa = complex_ldexp(a, -std::ilogb(ma));
+  const Complex sb = complex_ldexp(b, -std::ilogb(mb));
   const double w = sa.imag() * sb.real();
   const double e = std::fma(-sa.imag(), sb.real(), w);  // w - ay*bx, exactly
   const double f = std::fma(sa.real(), sb.imag(), -w);  // ax*by - w, rounded once
@@ -170,7 +170,7 @@ inline int orientation_sign_exact(const Polynomial_complex& a, const Polynomial_
 // has relative error <= u = 2^-53 (plus 2^-1075 absolute when it underflows),
 // the difference adds u * |result|, so |error| <= 2u(|p|+|q|) + 2^-1074 for
 // the result; the bound 4u(|p|+|q|) + 2^-1070 is safe.
-inline int orientation_sign(const Polynomial_complex& a, const Polynomial_complex& b)
+inline int orientation_sign(const Complex& a, const Complex& b)
 {
   const double p = a.real() * b.imag();
   const double q = a.imag() * b.real();
@@ -184,7 +184,7 @@ inline int orientation_sign(const Polynomial_complex& a, const Polynomial_comple
 // 0: the zero root (argument 0 by convention);
 // 1: argument in [0, pi)  (imaginary part > 0, or on the positive real axis);
 // 2: argument in [pi, 2 pi) (and NaN, which cannot be ordered).
-inline int ccw_half(const Polynomial_complex& z)
+inline int ccw_half(const Complex& z)
 {
   if(z.imag() > 0. || (z.imag() == 0. && z.real() > 0.))
     return 1;
@@ -196,7 +196,7 @@ inline int ccw_half(const Polynomial_complex& z)
 // Strict weak order "argument of a < argument of b" (arguments in [0, 2 pi)),
 // with zero before every other root. Within one half the arguments differ by
 // less than pi, so the orientation sign decides exactly.
-inline bool ccw_less(const Polynomial_complex& a, const Polynomial_complex& b)
+inline bool ccw_less(const Complex& a, const Complex& b)
 {
   const int ha = ccw_half(a), hb = ccw_half(b);
   if(ha != hb)
@@ -208,11 +208,11 @@ inline bool ccw_less(const Polynomial_complex& a, const Polynomial_complex& b)
 
 // Insertion sort: n is small, and it stays in bounds whatever the comparison does
 // (with NaN, for instance).
-inline void sort_ccw(Polynomial_complex* z, std::size_t n)
+inline void sort_ccw(Complex* z, std::size_t n)
 {
   for(std::size_t i = 1; i < n; ++i)
   {
-    const Polynomial_complex key = z[i];
+    const Complex key = z[i];
     std::size_t j = i;
     while(j > 0 && ccw_less(key, z[j - 1]))
     {
@@ -224,11 +224,11 @@ inline void sort_ccw(Polynomial_complex* z, std::size_t n)
 }
 
 // The one of {z, -z} whose argument is in [0, pi); zero is returned as +0.
-inline Polynomial_complex upper_half_representative(const Polynomial_complex& z)
+inline Complex upper_half_representative(const Complex& z)
 {
   switch(ccw_half(z))
   {
-    case 0: return Polynomial_complex(0., 0.);
+    case 0: return Complex(0., 0.);
     case 1: return z;
     default: return -z;
   }
@@ -239,8 +239,8 @@ inline Polynomial_complex upper_half_representative(const Polynomial_complex& z)
 // then the others sorted, then their negatives in the same order (whose
 // arguments are those of the former plus pi). So roots[z + i + k'] ==
 // -roots[z + i], with z zero roots and k' nonzero pairs.
-inline void write_sign_symmetric_roots(Polynomial_complex* a, std::size_t k,
-                                       Polynomial_complex* roots)
+inline void write_sign_symmetric_roots(Complex* a, std::size_t k,
+                                       Complex* roots)
 {
   std::size_t zeros = 0;
   for(std::size_t i = 0; i < k; ++i)
@@ -249,7 +249,7 @@ inline void write_sign_symmetric_roots(Polynomial_complex* a, std::size_t k,
   sort_ccw(a + zeros, k - zeros);
   const std::size_t pairs = k - zeros;
   for(std::size_t i = 0; i < 2 * zeros; ++i)
-    roots[i] = Polynomial_complex(0., 0.);
+    roots[i] = Complex(0., 0.);
   for(std::size_t i = 0; i < pairs; ++i)
   {
     roots[2 * zeros + i] = a[zeros + i];
@@ -267,31 +267,31 @@ inline void write_sign_symmetric_roots(Polynomial_complex* a, std::size_t k,
 // in a harmful way. The root of larger magnitude, q = -(b +- sqrt(b^2-4c))/2
 // with the sign that avoids cancellation, is computed first; the other root is
 // c / q (Vieta), which is accurate even when |c| << |b|^2.
-inline void quadratic_roots_in_range(const Polynomial_complex& b, const Polynomial_complex& c,
-                                     Polynomial_complex& r1, Polynomial_complex& r2)
+inline void quadratic_roots_in_range(const Complex& b, const Complex& c,
+                                     Complex& r1, Complex& r2)
 {
-  const Polynomial_complex disc = complex_mul(b, b) - 4. * c;
-  const Polynomial_complex d = principal_sqrt(disc);
+  const Complex disc = complex_mul(b, b) - 4. * c;
+  const Complex d = principal_sqrt(disc);
   // Re(conj(b) d) >= 0 means |b + d| >= |b - d|
   const double dot = b.real() * d.real() + b.imag() * d.imag();
-  const Polynomial_complex q = (dot >= 0.) ? -0.5 * (b + d) : -0.5 * (b - d);
+  const Complex q = (dot >= 0.) ? -0.5 * (b + d) : -0.5 * (b - d);
   if(is_zero(q))
   {
     // |q|^2 >= (|b|^2 + |d|^2)/2, so b = d = 0, hence c = 0: a double zero root
-    r1 = r2 = Polynomial_complex(0., 0.);
+    r1 = r2 = Complex(0., 0.);
     return;
   }
   const double inverse_nq = 1. / (q.real() * q.real() + q.imag() * q.imag());
   r1 = q;
-  r2 = Polynomial_complex((c.real() * q.real() + c.imag() * q.imag()) * inverse_nq,
+  r2 = Complex((c.real() * q.real() + c.imag() * q.imag()) * inverse_nq,
                           (c.imag() * q.real() - c.real() * q.imag()) * inverse_nq);
 }
 
 /// Roots of the monic quadratic y^2 + b y + c, the one of larger magnitude in `r1`.
 /// Finite input gives finite output (unless a root exceeds the double range);
 /// a double root or a zero root is handled; non-finite input gives NaN.
-inline void stable_quadratic_roots(const Polynomial_complex& b, const Polynomial_complex& c,
-                                   Polynomial_complex& r1, Polynomial_complex& r2)
+inline void stable_quadratic_roots(const Complex& b, const Complex& c,
+                                   Complex& r1, Complex& r2)
 {
   const double mb = max_abs_component(b), mc = max_abs_component(c);
   if(mb < 0x1p+250 && mc < 0x1p+500 && (mb > 0x1p-250 || mc > 0x1p-500))
@@ -301,7 +301,7 @@ inline void stable_quadratic_roots(const Polynomial_complex& b, const Polynomial
   }
   if(mb == 0. && mc == 0.)
   {
-    r1 = r2 = Polynomial_complex(0., 0.);
+    r1 = r2 = Complex(0., 0.);
     return;
   }
   if(!std::isfinite(mb) || !std::isfinite(mc))
@@ -314,17 +314,17 @@ inline void stable_quadratic_roots(const Polynomial_complex& b, const Polynomial
   // as (c 2^-k) / q: c 2^-2k may underflow when |c| << |b|^2, c 2^-k does not
   // (unless the smaller root itself is below the double range).
   const int k = std::ilogb((std::max)(mb, std::sqrt(mc)));
-  Polynomial_complex q, unused;
+  Complex q, unused;
   quadratic_roots_in_range(complex_ldexp(b, -k), complex_ldexp(c, -2 * k), q, unused);
   if(is_zero(q))
   {
-    r1 = r2 = Polynomial_complex(0., 0.);
+    r1 = r2 = Complex(0., 0.);
     return;
   }
-  const Polynomial_complex cs = complex_ldexp(c, -k);
+  const Complex cs = complex_ldexp(c, -k);
   const double inverse_nq = 1. / (q.real() * q.real() + q.imag() * q.imag());
   r1 = complex_ldexp(q, k);
-  r2 = Polynomial_complex((cs.real() * q.real() + cs.imag() * q.imag()) * inverse_nq,
+  r2 = Complex((cs.real() * q.real() + cs.imag() * q.imag()) * inverse_nq,
                           (cs.imag() * q.real() - cs.real() * q.imag()) * inverse_nq);
 }
 
@@ -334,9 +334,9 @@ inline void stable_quadratic_roots(const Polynomial_complex& b, const Polynomial
 
 /// Roots of z^2 + c0 (the sign-symmetric pair {a, -a}, a = sqrt(-c0)) in
 /// counterclockwise order.
-inline void sign_symmetric_quadratic_roots(const Polynomial_complex& c0, Polynomial_complex* roots)
+inline void sign_symmetric_quadratic_roots(const Complex& c0, Complex* roots)
 {
-  const Polynomial_complex a = upper_half_representative(principal_sqrt(-c0));
+  const Complex a = upper_half_representative(principal_sqrt(-c0));
   roots[0] = a;
   roots[1] = is_zero(a) ? a : -a;
 }
@@ -344,24 +344,24 @@ inline void sign_symmetric_quadratic_roots(const Polynomial_complex& c0, Polynom
 // Roots of z^4 + c2 z^2 + c0 through the generic steps: stable quadratic in
 // w = z^2, principal square roots, explicit zero handling. Used outside the
 // range of the fast path (c0 zero or tiny, coefficients huge).
-inline void sign_symmetric_quartic_roots_generic(const Polynomial_complex& c0, const Polynomial_complex& c2,
-                                                 Polynomial_complex* roots)
+inline void sign_symmetric_quartic_roots_generic(const Complex& c0, const Complex& c2,
+                                                 Complex* roots)
 {
-  Polynomial_complex w1, w2;
+  Complex w1, w2;
   stable_quadratic_roots(c2, c0, w1, w2);
-  const Polynomial_complex a = upper_half_representative(principal_sqrt(w1));
-  const Polynomial_complex b = upper_half_representative(principal_sqrt(w2));
+  const Complex a = upper_half_representative(principal_sqrt(w1));
+  const Complex b = upper_half_representative(principal_sqrt(w2));
   const bool a_zero = is_zero(a), b_zero = is_zero(b);
   if(a_zero || b_zero)
   {
-    const Polynomial_complex v = a_zero ? b : a; // zero too when both are
-    roots[0] = roots[1] = Polynomial_complex(0., 0.);
+    const Complex v = a_zero ? b : a; // zero too when both are
+    roots[0] = roots[1] = Complex(0., 0.);
     roots[2] = v;
     roots[3] = is_zero(v) ? v : -v;
     return;
   }
   const int first = (orientation_sign(a, b) < 0) ? 1 : 0;
-  const Polynomial_complex pair[2] = {a, b};
+  const Complex pair[2] = {a, b};
   roots[0] = pair[first];
   roots[1] = pair[1 - first];
   roots[2] = -roots[0];
@@ -381,8 +381,8 @@ inline void sign_symmetric_quartic_roots_generic(const Polynomial_complex& c0, c
 /// - b = sqrt(c0) / a = sqrt(c0) conj(a) / |q|, a square root of w2 = c0 / w1
 ///   (Vieta, accurate even when |w2| << |w1|), flipped into the upper half plane;
 /// - a, b, -a, -b or b, a, -b, -a, by the exact orientation of (a, b).
-inline void sign_symmetric_quartic_roots(const Polynomial_complex& c0, const Polynomial_complex& c2,
-                                         Polynomial_complex* roots)
+inline void sign_symmetric_quartic_roots(const Complex& c0, const Complex& c2,
+                                         Complex* roots)
 {
   const double m0 = max_abs_component(c0), m2 = max_abs_component(c2);
   if(!(m0 > 0x1p-500 && m0 < 0x1p+500 && m2 < 0x1p+250))
@@ -395,8 +395,8 @@ inline void sign_symmetric_quartic_roots(const Polynomial_complex& c0, const Pol
   const double dx = c2x * c2x - c2y * c2y - 4. * c0x;
   const double dy = 2. * c2x * c2y - 4. * c0y;
   const double md = (std::max)(std::abs(dx), std::abs(dy));
-  const Polynomial_complex d = (md > 0x1p-500) ? some_sqrt_in_range(dx, dy) : principal_sqrt(Polynomial_complex(dx, dy));
-  const Polynomial_complex s0 = some_sqrt_in_range(c0x, c0y);
+  const Complex d = (md > 0x1p-500) ? some_sqrt_in_range(dx, dy) : principal_sqrt(Complex(dx, dy));
+  const Complex s0 = some_sqrt_in_range(c0x, c0y);
   const double s = std::copysign(1., c2x * d.real() + c2y * d.imag());
   const double qx = -0.5 * (c2x + s * d.real());
   const double qy = -0.5 * (c2y + s * d.imag());
@@ -416,7 +416,7 @@ inline void sign_symmetric_quartic_roots(const Polynomial_complex& c0, const Pol
   const double sb = sign_factor(b_lower != 0);
   bx *= sb;
   by *= sb;
-  const Polynomial_complex pair[2] = {Polynomial_complex(ax, ay), Polynomial_complex(bx, by)};
+  const Complex pair[2] = {Complex(ax, ay), Complex(bx, by)};
   const int first = (orientation_sign(pair[0], pair[1]) < 0) ? 1 : 0;
   roots[0] = pair[first];
   roots[1] = pair[1 - first];
@@ -436,7 +436,7 @@ public:
   {
     if(n > inline_capacity)
     {
-      heap_.reset(new Polynomial_complex[n]);
+      heap_.reset(new Complex[n]);
       data_ = heap_.get();
     }
     else
@@ -444,26 +444,26 @@ public:
   }
   Complex_buffer(const Complex_buffer&) = delete;
   Complex_buffer& operator=(const Complex_buffer&) = delete;
-  Polynomial_complex* data() { return data_; }
-  Polynomial_complex& operator[](std::size_t i) { return data_[i]; }
+  Complex* data() { return data_; }
+  Complex& operator[](std::size_t i) { return data_[i]; }
 
   static constexpr std::size_t inline_capacity = 16;
 
 private:
-  Polynomial_complex inline_[inline_capacity];
-  std::unique_ptr<Polynomial_complex[]> heap_;
-  Polynomial_complex* data_;
+  Complex inline_[inline_capacity];
+  std::unique_ptr<Complex[]> heap_;
+  Complex* data_;
 };
 
 // p(y) and p'(y) for the monic p(y) = y^n + sum_m d[m] y^m, and sum_m |d_m| |y|^m
 // and sum_m m |d_m| |y|^(m-1) (with |d_n| = 1), the scales of their rounding errors.
-inline void evaluate_monic(const Polynomial_complex* d, std::size_t n, const Polynomial_complex& y,
-                           Polynomial_complex& p, Polynomial_complex& dp,
+inline void evaluate_monic(const Complex* d, std::size_t n, const Complex& y,
+                           Complex& p, Complex& dp,
                            double& p_scale, double& dp_scale)
 {
   const double ay = std::abs(y);
-  p = Polynomial_complex(1., 0.);
-  dp = Polynomial_complex(0., 0.);
+  p = Complex(1., 0.);
+  dp = Complex(0., 0.);
   p_scale = 1.;
   dp_scale = 0.;
   for(std::size_t m = n; m-- > 0;)
@@ -480,7 +480,7 @@ inline void evaluate_monic(const Polynomial_complex* d, std::size_t n, const Pol
 // near a multiple root), the step must be shorter than a tenth of the distance
 // to the nearest other root (so the root cannot jump to a neighbour's basin),
 // and the residual |p| must decrease.
-inline void polish_roots(const Polynomial_complex* d, std::size_t n, Polynomial_complex* y)
+inline void polish_roots(const Complex* d, std::size_t n, Complex* y)
 {
   if(n < 2)
     return;
@@ -489,12 +489,12 @@ inline void polish_roots(const Polynomial_complex* d, std::size_t n, Polynomial_
   {
     for(int step = 0; step < 2; ++step)
     {
-      Polynomial_complex p, dp;
+      Complex p, dp;
       double p_scale, dp_scale;
       evaluate_monic(d, n, y[i], p, dp, p_scale, dp_scale);
       if(is_zero(p) || !(std::abs(dp) > 1e3 * eps * dp_scale))
         break;
-      const Polynomial_complex delta = p / dp;
+      const Complex delta = p / dp;
       if(!is_finite(delta))
         break;
       double nearest = std::numeric_limits<double>::infinity();
@@ -503,8 +503,8 @@ inline void polish_roots(const Polynomial_complex* d, std::size_t n, Polynomial_
           nearest = (std::min)(nearest, std::abs(y[i] - y[j]));
       if(!(std::abs(delta) < 0.1 * nearest))
         break;
-      const Polynomial_complex candidate = y[i] - delta;
-      Polynomial_complex p_new, dp_new;
+      const Complex candidate = y[i] - delta;
+      Complex p_new, dp_new;
       double s1, s2;
       evaluate_monic(d, n, candidate, p_new, dp_new, s1, s2);
       if(!(std::abs(p_new) < std::abs(p)))
@@ -517,7 +517,7 @@ inline void polish_roots(const Polynomial_complex* d, std::size_t n, Polynomial_
 /// Aberth-Ehrlich iteration for the monic p(y) = y^n + sum_m d[m] y^m whose
 /// roots are of magnitude about 1 (the caller scales). Fallback of the
 /// eigensolver; also exposed for testing.
-inline void aberth_roots(const Polynomial_complex* d, std::size_t n, Polynomial_complex* y)
+inline void aberth_roots(const Complex* d, std::size_t n, Complex* y)
 {
   if(n == 0)
     return;
@@ -530,7 +530,6 @@ inline void aberth_roots(const Polynomial_complex* d, std::size_t n, Polynomial_
       radius = (std::max)(radius, std::pow(m == 0 ? 0.5 * a : a, 1. / double(n - m)));
   }
   radius = (radius > 0.) ? 2. * radius : 1.;
-  const double two_pi = 6.283185307179586;
   for(std::size_t i = 0; i < n; ++i)
     y[i] = std::polar(radius, two_pi * (double(i) + 0.25) / double(n) + 0.4);
   const double eps = std::numeric_limits<double>::epsilon();
@@ -539,18 +538,18 @@ inline void aberth_roots(const Polynomial_complex* d, std::size_t n, Polynomial_
     bool moved = false;
     for(std::size_t i = 0; i < n; ++i)
     {
-      Polynomial_complex p, dp;
+      Complex p, dp;
       double p_scale, dp_scale;
       evaluate_monic(d, n, y[i], p, dp, p_scale, dp_scale);
       if(std::abs(p) <= 4. * eps * p_scale)
         continue; // y[i] is a root within rounding
-      Polynomial_complex sum(0., 0.);
+      Complex sum(0., 0.);
       for(std::size_t j = 0; j < n; ++j)
         if(j != i && y[j] != y[i])
           sum += 1. / (y[i] - y[j]);
-      const Polynomial_complex ratio = p / dp;
-      const Polynomial_complex denominator = 1. - ratio * sum;
-      const Polynomial_complex w = is_zero(denominator) ? ratio : ratio / denominator;
+      const Complex ratio = p / dp;
+      const Complex denominator = 1. - ratio * sum;
+      const Complex w = is_zero(denominator) ? ratio : ratio / denominator;
       if(!is_finite(w))
         continue;
       y[i] -= w;
@@ -609,9 +608,9 @@ void balance_matrix(Matrix& a)
 // Eigenvalues of the (balanced) companion matrix of the monic y^n + sum_m d[m] y^m.
 // MaxN = 16 keeps all of Eigen's storage on the stack.
 template <int MaxN>
-bool companion_eigenvalues(const Polynomial_complex* d, std::size_t n, Polynomial_complex* y)
+bool companion_eigenvalues(const Complex* d, std::size_t n, Complex* y)
 {
-  typedef Eigen::Matrix<Polynomial_complex, Eigen::Dynamic, Eigen::Dynamic, 0, MaxN, MaxN> Matrix;
+  typedef Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, 0, MaxN, MaxN> Matrix;
   const Eigen::Index size = static_cast<Eigen::Index>(n);
   Matrix companion = Matrix::Zero(size, size);
   for(Eigen::Index i = 1; i < size; ++i)
@@ -637,20 +636,20 @@ bool companion_eigenvalues(const Polynomial_complex* d, std::size_t n, Polynomia
 // coefficient of y^m is of magnitude below 2^(1 + (n-m)/2) and at least one of
 // them is of magnitude about 1, which keeps the roots of order 1; then
 // companion eigenvalues, Newton polish, scale back.
-inline void unordered_polynomial_roots(const Polynomial_complex* c, std::size_t n,
-                                       Polynomial_complex* z)
+inline void unordered_polynomial_roots(const Complex* c, std::size_t n,
+                                       Complex* z)
 {
   std::size_t zeros = 0;
   while(zeros < n && is_zero(c[zeros]))
-    z[zeros++] = Polynomial_complex(0., 0.);
+    z[zeros++] = Complex(0., 0.);
   const std::size_t degree = n - zeros;
   if(degree == 0)
     return;
-  const Polynomial_complex* cr = c + zeros; // reduced polynomial, degree `degree`
-  Polynomial_complex* roots = z + zeros;
+  const Complex* cr = c + zeros; // reduced polynomial, degree `degree`
+  Complex* roots = z + zeros;
   if(degree == 1)
   {
-    roots[0] = Polynomial_complex(0., 0.) - cr[0];
+    roots[0] = Complex(0., 0.) - cr[0];
     return;
   }
   int s = std::numeric_limits<int>::min();
@@ -686,7 +685,7 @@ inline void unordered_polynomial_roots(const Polynomial_complex* c, std::size_t 
 /// w^(N/2) + sum_k c[2k] w^k give the pairs {sqrt(w), -sqrt(w)}.
 /// This is the general path of `polyvector_roots()`, exposed for testing the
 /// closed forms against it. Precondition: finite coefficients.
-inline void companion_roots(const Polynomial_complex* c, std::size_t N, Polynomial_complex* roots,
+inline void companion_roots(const Complex* c, std::size_t N, Complex* roots,
                             bool sign_symmetric = false)
 {
   if(N == 0)

@@ -15,70 +15,17 @@
 // lookup here reports "not found" instead of failing.
 
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <cstddef>
-#include <unordered_map>
 #include <vector>
-
-#include <boost/functional/hash.hpp>
-
 
 namespace CGAL {
 namespace Polyvector_fields {
 namespace IO {
 namespace internal {
-
-// Maps descriptors to 0..n-1 in the order they are added; unknown descriptors
-// are reported by `find`, never looked up out of bounds.
-template <typename Descriptor, bool dense = Polyvector_fields::internal::Has_idx<Descriptor>::value>
-class Descriptor_index
-{
-public:
-  void add(const Descriptor& d)
-  {
-    const std::size_t k = std::size_t(d.idx());
-    if(k >= m_index.size())
-      m_index.resize(k + 1, not_found);
-    m_index[k] = m_count++;
-  }
-
-  bool find(const Descriptor& d, std::size_t& id) const
-  {
-    const std::size_t k = std::size_t(d.idx());
-    if(k >= m_index.size() || m_index[k] == not_found)
-      return false;
-    id = m_index[k];
-    return true;
-  }
-
-private:
-  static constexpr std::size_t not_found = std::size_t(-1);
-  std::vector<std::size_t> m_index;
-  std::size_t m_count = 0;
-};
-
-template <typename Descriptor>
-class Descriptor_index<Descriptor, false>
-{
-public:
-  void add(const Descriptor& d) { m_index.emplace(d, m_index.size()); }
-
-  bool find(const Descriptor& d, std::size_t& id) const
-  {
-    const auto it = m_index.find(d);
-    if(it == m_index.end())
-      return false;
-    id = it->second;
-    return true;
-  }
-
-private:
-  std::unordered_map<Descriptor, std::size_t, boost::hash<Descriptor> > m_index;
-};
 
 // The faces of `tm` in faces(tm) order: position = file id.
 template <typename TriangleMesh>
@@ -103,9 +50,9 @@ vertex_list(const TriangleMesh& tm)
 }
 
 template <typename Descriptor>
-Descriptor_index<Descriptor> make_index(const std::vector<Descriptor>& list)
+Polyvector_fields::internal::Numbering<Descriptor> make_index(const std::vector<Descriptor>& list)
 {
-  Descriptor_index<Descriptor> index;
+  Polyvector_fields::internal::Numbering<Descriptor> index;
   for(const Descriptor& d : list)
     index.add(d);
   return index;

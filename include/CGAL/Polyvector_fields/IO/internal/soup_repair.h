@@ -16,8 +16,8 @@
 //      STL files are, becomes a connected surface);
 //   2. polygons that repeat a vertex (repair: consecutive repetitions removed,
 //      what is left with fewer than 3 distinct vertices dropped);
-//   3. polygons with more than 3 vertices (refused without repair; triangulated
-//      later, on the mesh, with repair);
+//   3. polygons with more than 3 vertices (refused without repair; with repair
+//      triangulated afterwards, see triangulate_polygons.h);
 //   4. duplicate polygons, the same vertex set in any order (repair: dropped);
 //   5. non-manifold edges, inconsistent orientations and pinched vertices
 //      (repair: CGAL's orient_polygon_soup, which reverses polygons and

@@ -1,0 +1,307 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_TANGENT_BUNDLE_H
+#define CGAL_POLYVECTOR_FIELDS_TANGENT_BUNDLE_H
+
+/// \file Tangent_bundle.h
+/// The discrete tangent bundle of a triangle mesh: face frames, numbering,
+/// Levi-Civita transport and connected components, built once and shared.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/face_frames.h>
+#include <CGAL/Polyvector_fields/internal/Face_numbering.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <complex>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// The BGL primitives are found by argument-dependent lookup, so that a mesh
+// whose graph traits are included after this header still works; these
+// helpers let classes with members of the same names reach the free functions.
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::face_descriptor
+face_of(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
+{
+  return face(h, tm);
+}
+
+} // namespace internal
+
+/// \ingroup PkgPolyvectorFieldsFrames
+///
+/// is the discrete tangent bundle of a triangle mesh (paper, Section 3.1): the
+/// plane of each face identified with the complex plane by its `Face_frame`,
+/// the discrete Levi-Civita connection between the frames of adjacent faces,
+/// a numbering of the faces and vertices, and the connected components.
+///
+/// Every algorithm of the package works on it: build it once and pass it to
+/// the designer, the root and singularity computations, the energies and
+/// measures, so that the frames and the numbering are computed once for a
+/// whole pipeline. The forms of the functions that take a mesh build their
+/// own.
+///
+/// <b>Numbering.</b> Faces are numbered `0 .. number_of_faces()-1` in the order
+/// of `faces(tm)` and vertices `0 .. number_of_vertices()-1` in the order of
+/// `vertices(tm)`: for a mesh read from a file, the order of the file. A
+/// `Surface_mesh` holding removed elements is numbered correctly.
+///
+/// <b>Transport.</b> A vector `u_f` of face `f` is parallel to the vector
+/// `u_g = u_f * conj(e_f) * e_g` of the adjacent face `g`, where `e_f` and `e_g`
+/// are the unit direction of their common edge written in the frames of `f` and
+/// `g`. Boundary edges carry no transport.
+///
+/// All quantities are computed in `double`, safely over the whole range of
+/// `double` (points are scaled by powers of two where a square could overflow).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
+///         the default is the internal point map of `TriangleMesh`
+///
+/// The mesh must outlive this object and keep its combinatorics and points while it is in use.
+template <typename TriangleMesh,
+          typename VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+class Tangent_bundle
+{
+public:
+  /// \name Types
+  /// @{
+  typedef TriangleMesh Triangle_mesh;  ///< the mesh type
+  typedef VertexPointMap Vertex_point_map;  ///< the vertex point map type
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;          ///< the face type of `TriangleMesh`
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;      ///< the vertex type of `TriangleMesh`
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;  ///< the halfedge type of `TriangleMesh`
+
+  /// an interior edge seen from its two faces: `face(h)` has index `f` and
+  /// `face(opposite(h))` has index `g`. `e_f` and `e_g` are the unit direction of
+  /// the edge from `source(h)` to `target(h)` in the frames of `f` and `g`.
+  struct Dual_edge
+  {
+    std::size_t f;              ///< the index of `face(h)`
+    std::size_t g;              ///< the index of `face(opposite(h))`
+    std::complex<double> e_f;   ///< the unit direction of the edge in the frame of `f`
+    std::complex<double> e_g;   ///< the unit direction of the edge in the frame of `g`
+    halfedge_descriptor h;      ///< the halfedge of the edge whose face is `f`
+  };
+  /// @}
+
+  /// builds the tangent bundle of `tm` with the points of `vpm`. Check `status()` before use.
+  Tangent_bundle(const TriangleMesh& tm, VertexPointMap vpm) : m_tm(tm), m_vpm(vpm) { build(); }
+
+  /// builds the tangent bundle of `tm` with its internal point map.
+  explicit Tangent_bundle(const TriangleMesh& tm)
+    : Tangent_bundle(tm, CGAL::get_const_property_map(CGAL::vertex_point, tm))
+  {}
+
+  /// returns `Error_code::SUCCESS`, or why the mesh cannot carry a field:
+  /// `EMPTY_MESH`, `NON_TRIANGLE_FACE` or `DEGENERATE_FACE`.
+  Error_code status() const { return m_status; }
+
+  /// returns the first face for which `status()` is not `SUCCESS`, if any.
+  std::size_t first_invalid_face() const { return m_first_invalid_face; }
+
+  /// returns the mesh.
+  const TriangleMesh& mesh() const { return m_tm; }
+  /// returns the vertex point map.
+  VertexPointMap vertex_point_map() const { return m_vpm; }
+
+  /// \name Faces and their frames
+  /// @{
+
+  /// returns the number of faces of the mesh.
+  std::size_t number_of_faces() const { return m_faces.size(); }
+  /// returns the index of `f`, in `0 .. number_of_faces()-1`.
+  std::size_t index(face_descriptor f) const { return m_face_index(f); }
+  /// returns whether `f` is a face of the mesh.
+  bool contains(face_descriptor f) const { return m_face_index.contains(f); }
+  /// returns the face of index `i`.
+  face_descriptor face(std::size_t i) const { return m_faces[i]; }
+  /// returns the frame of the face of index `i`.
+  const Face_frame& frame(std::size_t i) const { return m_frames[i]; }
+  /// @}
+
+  /// \name Vertices
+  /// @{
+
+  /// returns the number of vertices of the mesh (isolated ones included).
+  std::size_t number_of_vertices() const { return m_vertices.size(); }
+  /// returns the index of `v`, in `0 .. number_of_vertices()-1`.
+  std::size_t index(vertex_descriptor v) const { return m_vertex_index(v); }
+  /// returns the vertex of index `i`.
+  vertex_descriptor vertex(std::size_t i) const { return m_vertices[i]; }
+  /// returns the point of the vertex of index `i`, in `double`.
+  std::array<double, 3> point(std::size_t i) const { return point_of(m_vertices[i]); }
+  /// @}
+
+  /// \name Connection
+  /// @{
+
+  /// returns the interior edges, one entry per edge.
+  const std::vector<Dual_edge>& interior_edges() const { return m_edges; }
+  /// returns the unit direction, in the frame of `face(h)`, of the edge from `source(h)` to `target(h)`.
+  std::complex<double> edge_direction(halfedge_descriptor h) const
+  {
+    const std::array<double, 3> d = internal::scaled_difference(point_of(target(h, m_tm)), point_of(source(h, m_tm)));
+    const std::complex<double> e = frame(index(internal::face_of(h, m_tm))).to_complex(d[0], d[1], d[2]);
+    return e / std::abs(e);
+  }
+  /// transports the tangent vector `u` of `face(h)` to `face(opposite(h))`.
+  std::complex<double> transport(const std::complex<double>& u, halfedge_descriptor h) const
+  {
+    const halfedge_descriptor o = opposite(h, m_tm);
+    // The edge read from o runs the other way: both signs cancel in the ratio.
+    return u * std::conj(edge_direction(h)) * (-edge_direction(o));
+  }
+  /// @}
+
+  /// \name Components
+  /// @{
+
+  /// returns the number of connected components (faces connected through interior edges).
+  std::size_t number_of_components() const { return m_number_of_components; }
+  /// returns the component, in `0 .. number_of_components()-1`, of the face of index `i`.
+  std::size_t component(std::size_t i) const { return m_component[i]; }
+  /// @}
+
+private:
+  std::array<double, 3> point_of(vertex_descriptor v) const
+  {
+    using boost::get;
+    return internal::to_array(get(m_vpm, v));
+  }
+
+  void build()
+  {
+    m_faces.reserve(num_faces(m_tm));
+    for(face_descriptor f : faces(m_tm))
+    {
+      m_face_index.add(f);
+      m_faces.push_back(f);
+    }
+    m_vertices.reserve(num_vertices(m_tm));
+    for(vertex_descriptor v : vertices(m_tm))
+    {
+      m_vertex_index.add(v);
+      m_vertices.push_back(v);
+    }
+    if(m_faces.empty())
+    {
+      m_status = Error_code::EMPTY_MESH;
+      return;
+    }
+
+    m_frames.resize(m_faces.size());
+    for(std::size_t i = 0; i < m_faces.size(); ++i)
+    {
+      const Error_code code = face_frame(m_faces[i], m_tm, m_frames[i], CGAL::parameters::vertex_point_map(m_vpm));
+      if(code != Error_code::SUCCESS)
+      {
+        m_status = code;
+        m_first_invalid_face = i;
+        return;
+      }
+    }
+
+    std::vector<std::size_t> parent(m_faces.size());
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    auto find = [&parent](std::size_t i) {
+      while(parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+      return i;
+    };
+
+    m_edges.reserve(num_edges(m_tm));
+    for(auto e : edges(m_tm))
+    {
+      const halfedge_descriptor h = halfedge(e, m_tm);
+      const halfedge_descriptor o = opposite(h, m_tm);
+      if(CGAL::is_border(h, m_tm) || CGAL::is_border(o, m_tm))
+        continue;  // natural boundary condition: boundary edges carry no term
+      Dual_edge d;
+      d.h = h;
+      d.f = index(internal::face_of(h, m_tm));
+      d.g = index(internal::face_of(o, m_tm));
+      d.e_f = edge_direction(h);
+      d.e_g = -edge_direction(o);
+      m_edges.push_back(d);
+      parent[find(d.f)] = find(d.g);
+    }
+
+    m_component.resize(m_faces.size());
+    std::vector<std::size_t> label(m_faces.size(), std::size_t(-1));
+    m_number_of_components = 0;
+    for(std::size_t i = 0; i < m_faces.size(); ++i)
+    {
+      const std::size_t root = find(i);
+      if(label[root] == std::size_t(-1))
+        label[root] = m_number_of_components++;
+      m_component[i] = label[root];
+    }
+  }
+
+  const TriangleMesh& m_tm;
+  VertexPointMap m_vpm;
+  internal::Numbering<face_descriptor> m_face_index;
+  internal::Numbering<vertex_descriptor> m_vertex_index;
+  std::vector<face_descriptor> m_faces;
+  std::vector<vertex_descriptor> m_vertices;
+  std::vector<Face_frame> m_frames;
+  std::vector<Dual_edge> m_edges;
+  std::vector<std::size_t> m_component;
+  std::size_t m_number_of_components = 0;
+  Error_code m_status = Error_code::SUCCESS;
+  std::size_t m_first_invalid_face = 0;
+};
+
+namespace internal {
+
+// The tangent bundle type of the `tm + np` forms, with the vertex point map of `np`.
+template <typename TriangleMesh, typename NamedParameters>
+using Tangent_bundle_of =
+  Tangent_bundle<TriangleMesh, typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>;
+
+template <typename TriangleMesh, typename NamedParameters>
+Tangent_bundle_of<TriangleMesh, NamedParameters> make_tangent_bundle(const TriangleMesh& tm, const NamedParameters& np)
+{
+  return Tangent_bundle_of<TriangleMesh, NamedParameters>(
+    tm, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                           CGAL::get_const_property_map(CGAL::vertex_point, tm)));
+}
+
+// The tangent bundle of a mesh (built) or of a bundle (itself): for the
+// functions that accept both.
+template <typename TriangleMesh, typename VertexPointMap, typename NamedParameters>
+const Tangent_bundle<TriangleMesh, VertexPointMap>& bundle_of(const Tangent_bundle<TriangleMesh, VertexPointMap>& bundle,
+                                                              const NamedParameters&)
+{
+  return bundle;
+}
+
+// (The return type is deduced, so that it is not formed for a bundle during
+// overload resolution.)
+template <typename TriangleMesh, typename NamedParameters>
+auto bundle_of(const TriangleMesh& tm, const NamedParameters& np)
+{
+  return make_tangent_bundle(tm, np);
+}
+
+} // namespace internal
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_TANGENT_BUNDLE_H

@@ -1,0 +1,48 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_TYPES_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_TYPES_H
+
+// The types that the parts of the package share: complex numbers, the sparse
+// and dense types of the linear systems, 2 pi, and the stage times.
+
+#include <CGAL/number_type_config.h>
+
+#include <Eigen/Sparse>
+
+#include <chrono>
+#include <complex>
+#include <cstddef>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+typedef std::complex<double> Complex;
+typedef Eigen::SparseMatrix<Complex> Sparse_matrix;
+typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Dense_vector;
+
+constexpr double two_pi = 2 * CGAL_PI;
+
+// Seconds of the stages of a solve.
+struct Stage_times
+{
+  double assembly = 0, factorization = 0, solve = 0;
+};
+
+struct Timer
+{
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+};
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_TYPES_H

@@ -114,7 +114,14 @@ const char* usage =
   "  --angle-bound DEGREES    optimise the field so that u and v make at least DEGREES (0, 90]\n"
   "  --conjugate              optimise the field to be conjugate (planar-quad remeshing)\n"
   "  --orthogonality W        with --conjugate: weight W in [0, 1e30] pulling the field towards a cross field\n"
-  "  --iterations K           maximum number of frame-field iterations (default 200 / 100)\n"
+  "  --iterations K           maximum number of frame-field iterations (default 200 / 50, 100 with\n"
+  "                           --paper-stopping-rule)\n"
+  "  --tolerance T            with --conjugate: stop when the mean normalised deviation from conjugacy\n"
+  "                           |u^T S v| / (|u| |v| max|k|) of the free faces, weighted by |k1 k2|, is at most T\n"
+  "                           (default 5e-3)\n"
+  "  --max-lambda L           with --conjugate: cap of the weight lambda of the global step (default 1e4)\n"
+  "  --paper-stopping-rule    with --conjugate: the paper's rule, sum |u^T S v| < T on the unit-size\n"
+  "                           field (default T 1e-4), lambda unbounded\n"
   "output (default when none is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
@@ -143,6 +150,9 @@ struct Options
   bool conjugate = false;
   double orthogonality = 0;
   std::size_t iterations = 0;  // 0: the algorithm's default
+  double tolerance = 0;        // 0: the stopping rule's default
+  double max_lambda = 0;       // 0: the stopping rule's default
+  bool paper_stopping_rule = false;
   std::string out_field, out_singularities, out_vtk, out_mesh;
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
 
@@ -256,6 +266,9 @@ Options parse_options(int argc, char** argv)
     else if(flag == "--conjugate") o.conjugate = true;
     else if(flag == "--orthogonality") o.orthogonality = line.number(0, 1e30);
     else if(flag == "--iterations") o.iterations = line.integer(1, 1000000);
+    else if(flag == "--tolerance") o.tolerance = line.number(1e-300, 1e300);
+    else if(flag == "--max-lambda") o.max_lambda = line.number(1e-300, 1e300);
+    else if(flag == "--paper-stopping-rule") o.paper_stopping_rule = true;
     else if(flag == "--out-field") o.out_field = line.text();
     else if(flag == "--out-singularities") o.out_singularities = line.text();
     else if(flag == "--out-vtk") o.out_vtk = line.text();
@@ -289,6 +302,8 @@ Options parse_options(int argc, char** argv)
     throw Failure("--angle-bound and --conjugate are two different optimisations: choose one", 2);
   if(o.orthogonality > 0 && !o.conjugate)
     throw Failure("--orthogonality goes with --conjugate", 2);
+  if((o.tolerance > 0 || o.max_lambda > 0 || o.paper_stopping_rule) && !o.conjugate)
+    throw Failure("--tolerance, --max-lambda and --paper-stopping-rule go with --conjugate", 2);
   if(o.sign_symmetric && o.degree % 2 != 0)
     throw Failure("--sign-symmetric needs an even --degree", 2);
   if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty() && o.out_mesh.empty())
@@ -630,6 +645,7 @@ struct Curvature
   bool estimated = false;
   PVF::Error_code status = PVF::Error_code::SUCCESS;
   Mesh::Property_map<Face, Curvatures> map;
+  std::size_t fallback_vertices = 0;  // vertices no jet fit determined (normal-variation estimate)
 };
 
 Curvature& estimate_curvature(Mesh& tm, Curvature& curvature)
@@ -637,7 +653,8 @@ Curvature& estimate_curvature(Mesh& tm, Curvature& curvature)
   if(!curvature.estimated)
   {
     curvature.map = tm.add_property_map<Face, Curvatures>("f:pvf_curvatures").first;
-    curvature.status = PVF::estimate_principal_curvatures(tm, curvature.map);
+    curvature.status = PVF::estimate_principal_curvatures(
+      tm, curvature.map, PVF::parameters::fallback_vertices(curvature.fallback_vertices));
     curvature.estimated = true;
   }
   return curvature;
@@ -766,16 +783,28 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
     check(estimate_curvature(tm, curvature).status, "curvature");
     clock.lap("curvature");
     PVF::Conjugate_field_result result;
-    const auto np = PVF::parameters::principal_curvature_map(curvature.map,
-                                                             PVF::parameters::orthogonality_weight(o.orthogonality));
-    check(o.iterations ? PVF::design_conjugate_frame_field(tm, constraints.list, field.coefficients, result,
-                                                            np.number_of_iterations(o.iterations))
-                       : PVF::design_conjugate_frame_field(tm, constraints.list, field.coefficients, result, np),
-          "conjugate field");
+    const PVF::Conjugacy_stopping_rule rule = o.paper_stopping_rule ? PVF::Conjugacy_stopping_rule::RESIDUAL_SUM
+                                                                    : PVF::Conjugacy_stopping_rule::MEAN_DEVIATION;
+    const PVF::Conjugate_field_defaults defaults = PVF::conjugate_field_defaults(rule);
+    namespace P = PVF::parameters;
+    const auto np = P::principal_curvature_map(
+      curvature.map,
+      P::orthogonality_weight(
+        o.orthogonality,
+        P::stopping_rule(rule, P::tolerance(o.tolerance > 0 ? o.tolerance : defaults.tolerance,
+                                            P::maximum_lambda(o.max_lambda > 0 ? o.max_lambda : defaults.maximum_lambda,
+                                                              CGAL::parameters::number_of_iterations(
+                                                                o.iterations ? o.iterations : defaults.iterations))))));
+    check(PVF::design_conjugate_frame_field(tm, constraints.list, field.coefficients, result, np), "conjugate field");
     report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
-           << " iterations (orthogonality weight " << o.orthogonality << "); residual sum |u^T S v| (unit-size field): "
+           << " iterations (orthogonality weight " << o.orthogonality << ", last lambda " << result.final_lambda
+           << "); mean deviation |u^T S v| / (|u| |v| max|k|) of the free faces " << result.deviation_history.front()
+           << " -> " << result.mean_deviation << "; residual sum |u^T S v| (unit-size field): "
            << result.residual_history.front() << " -> free faces " << result.free_residual << ", constrained faces "
            << result.constrained_residual << ", all faces " << result.residual << "\n";
+    if(curvature.fallback_vertices > 0)
+      report << "note            the curvature of " << curvature.fallback_vertices
+             << " vertices comes from the variation of the normals (no jet fit determined it)\n";
     clock.lap("frame field");
   }
   field.frame_report = report.str();
@@ -819,9 +848,11 @@ Analysis analyse_field(const Options& o, Mesh& tm, const Field& field, Curvature
     a.face_arrays.emplace_back("min_angle_degrees", angles);
   }
   tm.remove_property_map(angle_map);
-  if(o.frame_field())
+  // The conjugacy deviation only where the curvature is already known (a
+  // conjugate field, curvature constraints): a diagnostic never estimates it.
+  if(o.frame_field() && curvature.estimated)
   {
-    if(estimate_curvature(tm, curvature).status != PVF::Error_code::SUCCESS)
+    if(curvature.status != PVF::Error_code::SUCCESS)
       a.note = "the VTK file has no conjugacy_deviation: the curvature could not be estimated (" +
                std::string(PVF::get_error_message(curvature.status)) + ")";
     else

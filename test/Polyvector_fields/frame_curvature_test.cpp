@@ -433,28 +433,32 @@ TEST(CurvatureEstimation, BoundaryOfOpenCylinder)
 
 TEST(CurvatureEstimation, LowValenceVertices)
 {
-  // Tetrahedron: 4 vertices cannot determine a quadric (6 coefficients).
-  {
-    const Mesh tm = make_mesh<Mesh>(tetrahedron());
-    Recording_store store;
-    EXPECT_EQ(estimate_into_store(tm, store), PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
-    EXPECT_TRUE(store.empty());
-  }
-  // Regular octahedron: 6 vertices, but they do not determine a quadric over
-  // the fitting plane (their covariance is isotropic, the plane is a coordinate
-  // plane and two opposite vertices project onto the same position): the
-  // singular fit is refused, not guessed.
-  {
-    const Mesh tm = make_mesh<Mesh>(octahedron());
-    Recording_store store;
-    const PVF::Error_code code = estimate_into_store(tm, store);
-    EXPECT_EQ(code, PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
-    EXPECT_TRUE(store.empty());
-    // A degree-4 fit needs 15 points.
-    EXPECT_EQ(estimate_into_store(tm, store, CGAL::parameters::degree_fitting(4)),
-              PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
-    EXPECT_TRUE(store.empty());
-  }
+  // Tetrahedron (4 vertices cannot determine a quadric of 6 coefficients) and
+  // regular octahedron (6 vertices whose covariance is isotropic, so that two
+  // opposite vertices project onto one position of the fitting plane): no fit
+  // is possible, and every vertex falls back to the normal-variation estimate.
+  // By symmetry each face is umbilic, and since the vertex normals are radial
+  // (n = p / R) the curvature is positive and at most 1/R (the face tensors
+  // are exactly I/R; the average in the vertex's tangent plane shrinks them).
+  for(int shape = 0; shape < 2; ++shape)
+    for(int degree : { 2, 4 })
+    {
+      const Soup soup = shape == 0 ? tetrahedron() : octahedron();
+      const double R = shape == 0 ? std::sqrt(3.) : 1.;
+      const Mesh tm = make_mesh<Mesh>(soup);
+      auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+      std::size_t fallbacks = 0;
+      ASSERT_EQ(PVF::estimate_principal_curvatures(tm, map, PVF::parameters::fallback_vertices(fallbacks, CGAL::parameters::degree_fitting(degree))),
+                PVF::Error_code::SUCCESS);
+      EXPECT_EQ(fallbacks, soup.points.size());
+      expect_well_formed(tm, map);
+      for(auto f : faces(tm))
+      {
+        EXPECT_NEAR(get(map, f).k1, get(map, f).k2, 1e-12 / R) << shape;
+        EXPECT_GT(get(map, f).k2, 0.) << shape;
+        EXPECT_LE(get(map, f).k1, 1. / R + 1e-12) << shape;
+      }
+    }
   // A sphere with one face split 1-to-3: the new vertex has valence 3; its
   // 1-ring (4 points) is too small and grows to the 2-ring.
   {
@@ -485,25 +489,31 @@ TEST(CurvatureEstimation, LowValenceVertices)
   }
 }
 
-TEST(CurvatureEstimation, TooFewPointsLeavesMapUntouched)
+// Meshes where no vertex, or only some, can be fitted: the whole mesh still
+// gets curvatures, flat parts get exactly zero, and the fitted part is the same
+// as on its own.
+TEST(CurvatureEstimation, FallbackOnUnfittableParts)
 {
-  // One triangle, two triangles: fewer than 6 points in the component.
-  Soup one;
-  one.points = { Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0) };
-  one.faces = { { 0, 1, 2 } };
-  Soup two = one;
-  two.points.push_back(Point(1, 1, 0.2));
-  two.faces.push_back({ 1, 3, 2 });
-  for(const Soup& soup : { one, two })
+  // One flat triangle: three vertices with one normal, hence zero curvature.
   {
-    const Mesh tm = make_mesh<Mesh>(soup);
-    Recording_store store;
-    EXPECT_EQ(estimate_into_store(tm, store), PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
-    EXPECT_TRUE(store.empty());
+    Soup one;
+    one.points = { Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0) };
+    one.faces = { { 0, 1, 2 } };
+    const Mesh tm = make_mesh<Mesh>(one);
+    auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+    std::size_t fallbacks = 0;
+    ASSERT_EQ(PVF::estimate_principal_curvatures(tm, map, PVF::parameters::fallback_vertices(fallbacks)),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(fallbacks, 3u);
+    for(auto f : faces(tm))
+    {
+      EXPECT_EQ(get(map, f).k1, 0.);
+      EXPECT_EQ(get(map, f).k2, 0.);
+    }
   }
-  // A long strip two vertices wide: its points lie on two lines, which never
-  // determine a quadric however far the ring grows; refused (quickly: the
-  // growth stops three rings after the target).
+  // A long flat strip two vertices wide: its points lie on two lines, which
+  // never determine a quadric however far the ring grows (the growth stops
+  // three rings after the target); every vertex falls back, with curvature 0.
   {
     Soup strip;
     const int n = 2000;
@@ -515,25 +525,46 @@ TEST(CurvatureEstimation, TooFewPointsLeavesMapUntouched)
     for(int i = 0; i < n; ++i)
       strip.add_quad(2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1);
     const Mesh tm = make_mesh<Mesh>(strip);
-    Recording_store store;
-    const auto start = std::chrono::steady_clock::now();
-    EXPECT_EQ(estimate_into_store(tm, store), PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.);
-    EXPECT_TRUE(store.empty());
+    auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+    std::size_t fallbacks = 0;
+    ASSERT_EQ(PVF::estimate_principal_curvatures(tm, map, PVF::parameters::fallback_vertices(fallbacks)),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(fallbacks, strip.points.size());
+    for(auto f : faces(tm))
+      ASSERT_TRUE(get(map, f).k1 == 0. && get(map, f).k2 == 0.);
   }
-  // A good sphere plus a separate triangle: the whole call fails, nothing written.
+  // A sphere plus a separate triangle: the triangle falls back to zero, the
+  // sphere keeps its fitted curvatures, equal to those of the sphere alone.
   {
-    Soup soup = sphere(1., 16, 8);
+    const Soup alone = sphere(1., 16, 8);
+    Soup soup = alone;
     const std::size_t n = soup.points.size();
     soup.points.push_back(Point(5, 0, 0));
     soup.points.push_back(Point(6, 0, 0));
     soup.points.push_back(Point(5, 1, 0));
     soup.faces.push_back({ n, n + 1, n + 2 });
-    const Mesh tm = make_mesh<Mesh>(soup);
-    Recording_store store;
-    EXPECT_EQ(estimate_into_store(tm, store), PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
-    EXPECT_TRUE(store.empty());
-    // A pre-filled map keeps its values.
+    const Mesh tm = make_mesh<Mesh>(soup), tm_alone = make_mesh<Mesh>(alone);
+    auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+    auto map_alone = get(CGAL::dynamic_face_property_t<Curvatures>(), tm_alone);
+    std::size_t fallbacks = 0, fallbacks_alone = 0;
+    ASSERT_EQ(PVF::estimate_principal_curvatures(tm, map, PVF::parameters::fallback_vertices(fallbacks)),
+              PVF::Error_code::SUCCESS);
+    ASSERT_EQ(PVF::estimate_principal_curvatures(tm_alone, map_alone, PVF::parameters::fallback_vertices(fallbacks_alone)),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(fallbacks_alone, 0u);
+    EXPECT_EQ(fallbacks, 3u);
+    for(auto f : faces(tm_alone))
+    {
+      EXPECT_NEAR(get(map, f).k1, get(map_alone, f).k1, 1e-12);
+      EXPECT_NEAR(get(map, f).k2, get(map_alone, f).k2, 1e-12);
+    }
+    const Mesh::Face_index last(static_cast<Mesh::size_type>(soup.faces.size() - 1));
+    EXPECT_EQ(get(map, last).k1, 0.);
+    EXPECT_EQ(get(map, last).k2, 0.);
+  }
+  // A failure (here a bad parameter) leaves a pre-filled map as it was.
+  {
+    const Mesh tm = make_mesh<Mesh>(sphere(1., 16, 8));
     auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
     Curvatures sentinel;
     sentinel.k1 = 42.;
@@ -542,7 +573,8 @@ TEST(CurvatureEstimation, TooFewPointsLeavesMapUntouched)
     sentinel.d2 = Vector(4, 5, 6);
     for(auto f : faces(tm))
       put(map, f, sentinel);
-    EXPECT_EQ(PVF::estimate_principal_curvatures(tm, map), PVF::Error_code::CURVATURE_ESTIMATION_FAILED);
+    EXPECT_EQ(PVF::estimate_principal_curvatures(tm, map, CGAL::parameters::degree_fitting(1).degree_monge(1)),
+              PVF::Error_code::INVALID_PARAMETER);
     for(auto f : faces(tm))
     {
       EXPECT_EQ(get(map, f).k1, 42.);

@@ -139,10 +139,26 @@ TEST(Conjugate, TorusAndHyperbolicParaboloid)
               PVF::Error_code::SUCCESS);
     ASSERT_GT(constraints.size(), 5u) << named.name;
     auto field = tm.add_property_map<Face, std::vector<Complex> >("f:c").first;
+    // The default rule: the mean normalised deviation of the free faces.
+    PVF::Conjugate_field_result mean;
+    ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, mean,
+                                                PVF::parameters::principal_curvature_map(curvatures)),
+              PVF::Error_code::SUCCESS);
+    EXPECT_TRUE(mean.converged) << named.name;
+    const double tolerance = PVF::conjugate_field_defaults(PVF::Conjugacy_stopping_rule::MEAN_DEVIATION).tolerance;
+    EXPECT_LE(mean.mean_deviation, tolerance) << named.name;
+    EXPECT_GT(mean.deviation_history.front(), tolerance) << named.name;  // the smooth field was not conjugate
+    EXPECT_LE(mean.iterations, 50u);
+    EXPECT_LE(mean.final_lambda, 1e4);
+    std::cout << named.name << " (mean deviation rule): " << mean.iterations << " iterations, mean deviation "
+              << mean.deviation_history.front() << " -> " << mean.mean_deviation << "\n";
+    // The paper's rule.
     PVF::Conjugate_field_result result;
-    ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, result,
-                                                PVF::parameters::principal_curvature_map(curvatures)
-                                                  .number_of_iterations(50)),
+    ASSERT_EQ(PVF::design_conjugate_frame_field(
+                tm, constraints, field, result,
+                PVF::parameters::stopping_rule(PVF::Conjugacy_stopping_rule::RESIDUAL_SUM,
+                                               PVF::parameters::principal_curvature_map(curvatures)
+                                                 .number_of_iterations(50))),
               PVF::Error_code::SUCCESS);
     EXPECT_TRUE(result.converged) << named.name;
     EXPECT_LT(result.free_residual, 1e-4) << named.name;
@@ -211,8 +227,17 @@ TEST(Conjugate, InspiredMesh)
             PVF::Error_code::SUCCESS);
   ASSERT_EQ(constraints.size(), 84u);
   auto field = tm.add_property_map<Face, std::vector<Complex> >("f:c").first;
+  PVF::Conjugate_field_result mean;
+  ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, mean), PVF::Error_code::SUCCESS);
+  EXPECT_TRUE(mean.converged);
+  EXPECT_LE(mean.mean_deviation, PVF::conjugate_field_defaults(PVF::Conjugacy_stopping_rule::MEAN_DEVIATION).tolerance);
+  EXPECT_LE(mean.iterations, 50u);
+  std::cout << "inspired_mesh (mean deviation rule): " << mean.iterations << " iterations, mean deviation "
+            << mean.mean_deviation << ", residual free faces " << mean.free_residual << "\n";
   PVF::Conjugate_field_result result;
-  ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, result), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::design_conjugate_frame_field(tm, constraints, field, result,
+                                              PVF::parameters::stopping_rule(PVF::Conjugacy_stopping_rule::RESIDUAL_SUM)),
+            PVF::Error_code::SUCCESS);
   EXPECT_TRUE(result.converged);
   EXPECT_LT(result.free_residual, 1e-4);
   EXPECT_LE(result.iterations, 50u);

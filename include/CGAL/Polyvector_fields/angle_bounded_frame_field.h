@@ -76,6 +76,12 @@ struct Angle_bound_result
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1e-7}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_lambda}
+///     \cgalParamDescription{the largest weight `lambda` of the global step, `>= initial_lambda`; at the cap the
+///                           factorization is reused}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{unbounded (the paper)}
+///   \cgalParamNEnd
 ///   \pvfLocalGlobalParams{200}
 /// \cgalNamedParamsEnd
 ///
@@ -96,7 +102,7 @@ Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle
   const double theta_min = choose_parameter(get_parameter(np, internal_np::angle_bound), 70.0 * CGAL_PI / 180.0);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 1e-7);
   internal::Local_global_parameters p;
-  Error_code code = internal::read_local_global_parameters(np, 200, p);
+  Error_code code = internal::read_local_global_parameters(np, 200, std::numeric_limits<double>::infinity(), p);
   if(code != Error_code::SUCCESS)
     return code;
   if(!std::isfinite(theta_min) || !std::isfinite(tolerance))
@@ -120,7 +126,7 @@ Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle
         r.minimum_free_angle = (std::min)(r.minimum_free_angle, a);
     }
     if(p.verbose && iteration > 0)
-      std::cerr << "angle bound: iteration " << iteration << ", lambda " << lambda / p.lambda_factor
+      std::cerr << "angle bound: iteration " << iteration << ", lambda " << lambda
                 << ", smallest angle " << r.minimum_free_angle * 180 / CGAL_PI << " degrees\n";
     return r.converged = r.minimum_free_angle >= theta_min - tolerance;
   };

@@ -66,13 +66,26 @@ int index_numerator(const Bundle& bundle, std::size_t N, const std::vector<std::
   do
   {
     const auto o = opposite(h, tm);
-    const std::size_t f = bundle.index(face(h, tm)), g = bundle.index(face(o, tm));
+    // The matching angle of an edge is computed once, across its canonical
+    // halfedge (the one whose face has the smaller index; halfedge(edge(h))
+    // is no canonical choice: a Surface_mesh edge remembers the halfedge it
+    // was made from), and taken with the opposite sign from the other side:
+    // then the two vertices of the edge see exactly opposite angles, also
+    // where the ratio is (nearly) real and negative, where arg() would give
+    // +pi from both sides, and the indices add up to N chi exactly.
+    const bool canonical = bundle.index(face(h, tm)) < bundle.index(face(o, tm));
+    const auto hc = canonical ? h : o, oc = canonical ? o : h;
+    const std::size_t f = bundle.index(face(hc, tm)), g = bundle.index(face(oc, tm));
     const std::complex<double> y_f = c[f * N], y_g = c[g * N];
     if(y_f == std::complex<double>(0) || y_g == std::complex<double>(0))
       defined = false;
-    const std::complex<double> e_f = bundle.edge_direction(h), e_g = -bundle.edge_direction(o);
-    // Arg( y_g conj(e_g)^N / (y_f conj(e_f)^N) ), for unit e_f: 1/conj(e_f)^N = e_f^N.
-    delta_sum += std::arg(y_g * std::pow(std::conj(e_g), int(N)) * std::conj(y_f) * std::pow(e_f, int(N)));
+    const std::complex<double> e_f = bundle.edge_direction(hc), e_g = -bundle.edge_direction(oc);
+    // Arg( y_g conj(e_g)^N / (y_f conj(e_f)^N) ), for unit e_f: 1/conj(e_f)^N = e_f^N. The coefficients are
+    // made unit first (std::abs does not overflow): y_g conj(y_f) itself overflows for |y| beyond 1e154.
+    const std::complex<double> u_f = defined ? y_f / std::abs(y_f) : std::complex<double>(1);
+    const std::complex<double> u_g = defined ? y_g / std::abs(y_g) : std::complex<double>(1);
+    const double delta = std::arg(u_g * std::pow(std::conj(e_g), int(N)) * std::conj(u_f) * std::pow(e_f, int(N)));
+    delta_sum += (h == hc) ? delta : -delta;
     angle_sum += corner_angle(bundle, h);
     h = prev(o, tm);  // the next face counterclockwise around target(h0)
   } while(h != h0);

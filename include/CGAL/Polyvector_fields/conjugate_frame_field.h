@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <type_traits>
 #include <vector>
@@ -33,18 +34,62 @@ namespace Polyvector_fields {
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
+/// the stopping rules of `design_conjugate_frame_field()`.
+enum class Conjugacy_stopping_rule
+{
+  /// the mean normalised deviation `|u^T S v| / (|u| |v| max(|k1|, |k2|))` over
+  /// the free faces, weighted by `Khat_f` as the conjugacy term of Eq. 16 weighs them, is at most `tolerance`
+  /// (default `5e-3`): a number without units, the same on every mesh
+  MEAN_DEVIATION,
+  /// the paper's rule: the sum of `|u^T S v|` over the free faces, on the field
+  /// scaled to unit root mean square length, is below `tolerance` (default
+  /// `1e-4`); it grows stricter with the number of faces and the curvature
+  RESIDUAL_SUM
+};
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// the defaults of the named parameters of `design_conjugate_frame_field()`
+/// that depend on its stopping rule.
+struct Conjugate_field_defaults
+{
+  double tolerance;              ///< `tolerance`
+  double maximum_lambda;         ///< `maximum_lambda`
+  std::size_t iterations;        ///< `number_of_iterations`
+};
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// returns the defaults of `design_conjugate_frame_field()` for `rule`: with
+/// the mean deviation, a tolerance of `5e-3`, `lambda` capped at `1e4` and 50
+/// iterations at most; with the paper's residual sum, its tolerance `1e-4`,
+/// no cap and 100 iterations.
+inline Conjugate_field_defaults conjugate_field_defaults(Conjugacy_stopping_rule rule)
+{
+  if(rule == Conjugacy_stopping_rule::RESIDUAL_SUM)
+    return { 1e-4, std::numeric_limits<double>::infinity(), 100 };
+  return { 5e-3, 1e4, 50 };
+}
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
 /// reports on a run of `design_conjugate_frame_field()`. Residuals are sums
 /// over faces of `|u^T S v|`, measured on the field rescaled so that the root
-/// mean square length of its vectors is 1 (`scale` is that factor).
+/// mean square length of its vectors is 1 (`scale` is that factor); deviations
+/// are the normalised `|u^T S v| / (|u| |v| max(|k1|, |k2|))` of
+/// `compute_conjugacy_deviation()`.
 struct Conjugate_field_result
 {
   std::size_t iterations = 0;          ///< global steps done
-  bool converged = false;              ///< `free_residual < tolerance`
+  bool converged = false;              ///< the stopping rule was met
+  double mean_deviation = 0;           ///< mean deviation over the free faces, weighted by `Khat_f` (the weight of their conjugacy term)
+  std::vector<double> deviation_history;  ///< `mean_deviation` before the first step and after each step
   std::vector<double> residual_history;  ///< the free-face residual before the first step and after each step
   double residual = 0;                 ///< over all faces
   double free_residual = 0;            ///< over the faces not fixed by a hard full constraint
   double constrained_residual = 0;     ///< over the faces fixed by a hard full constraint
   double scale = 1;                    ///< the factor applied to the vectors when measuring residuals
+  double final_lambda = 0;             ///< the weight `lambda` of the last global step
 };
 
 namespace internal {
@@ -52,12 +97,13 @@ namespace internal {
 // Shape operators in the face frames and the normalised |K| of every face.
 template <typename Bundle, typename CurvatureMap>
 Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, std::vector<std::array<double, 4> >& S,
-                                std::vector<double>& normalised_gaussian)
+                                std::vector<double>& normalised_gaussian, std::vector<double>& largest_curvature)
 {
   using boost::get;
   const std::size_t F = bundle.number_of_faces();
   S.resize(F);
   normalised_gaussian.resize(F);
+  largest_curvature.resize(F);
   double largest = 0;
   for(std::size_t f = 0; f < F; ++f)
   {
@@ -67,6 +113,7 @@ Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, s
       if(!std::isfinite(x))
         return Error_code::NON_FINITE_VALUE;
     normalised_gaussian[f] = std::abs(pc.k1 * pc.k2);
+    largest_curvature[f] = (std::max)(std::abs(pc.k1), std::abs(pc.k2));
     largest = (std::max)(largest, normalised_gaussian[f]);
   }
   for(double& k : normalised_gaussian)
@@ -90,10 +137,17 @@ Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, s
 /// which finds the smoothest field close to the local one with weights
 /// `lambda * Khat_f` (Eq. 16, `Khat_f = |k1 k2|` normalised to `[0, 1]`) plus the
 /// orthogonality term `w |c_2|^2` (Eq. 17), keeping the hard constraints.
-/// `lambda` is multiplied by `lambda_factor` at each iteration. It stops when
-/// the residual `sum |u^T S v|` over the faces not fixed by a hard full
-/// constraint falls below `tolerance`, the field being rescaled so that the root
-/// mean square length of its vectors is 1, or after `number_of_iterations` steps.
+/// `lambda` is multiplied by `lambda_factor` at each iteration, up to
+/// `maximum_lambda`; from there on the matrix no longer changes, and each
+/// iteration reuses its factorization (one solve). By default it stops when
+/// the mean normalised deviation `|u^T S v| / (|u| |v| max(|k1|, |k2|))` over
+/// the free faces, weighted by `Khat_f`, is at most `tolerance`
+/// (`Conjugacy_stopping_rule::MEAN_DEVIATION`), a test without units that
+/// means the same on every mesh; the paper's rule, the sum of `|u^T S v|` on
+/// the field scaled to unit size, is `Conjugacy_stopping_rule::RESIDUAL_SUM`.
+/// It also stops after `number_of_iterations` steps. The user manual's section
+/// "Conjugate frame fields" gives the reasons for the defaults and what a
+/// tolerance means for the planarity of quads.
 ///
 /// \pvfFrameFieldTparams
 ///
@@ -109,12 +163,21 @@ Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, s
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{tolerance}
-///     \cgalParamDescription{the residual below which the iterations stop, `> 0`}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{1e-4}
+///   \cgalParamNBegin{stopping_rule}
+///     \cgalParamDescription{when the iterations stop: a `Conjugacy_stopping_rule`}
+///     \cgalParamDefault{`Conjugacy_stopping_rule::MEAN_DEVIATION`}
 ///   \cgalParamNEnd
-///   \pvfLocalGlobalParams{100}
+///   \cgalParamNBegin{tolerance}
+///     \cgalParamDescription{the tolerance of the stopping rule, `> 0`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`5e-3` for the mean deviation, `1e-4` for the paper's residual sum}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_lambda}
+///     \cgalParamDescription{the largest weight `lambda` of the global step, `>= initial_lambda`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e4` with the mean deviation; unbounded (the paper) with the residual sum}
+///   \cgalParamNEnd
+///   \pvfLocalGlobalParams{50 with the mean deviation\, 100 with the residual sum}
 /// \cgalNamedParamsEnd
 ///
 /// \returns `SUCCESS` (also when the iterations did not converge: see `result.converged`),
@@ -134,9 +197,13 @@ Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, co
   typedef std::complex<double> Complex;
 
   const double orthogonality = choose_parameter(get_parameter(np, internal_np::orthogonality_weight), 0.0);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 1e-4);
+  const Conjugacy_stopping_rule rule =
+    choose_parameter(get_parameter(np, internal_np::stopping_rule), Conjugacy_stopping_rule::MEAN_DEVIATION);
+  const bool paper_rule = rule == Conjugacy_stopping_rule::RESIDUAL_SUM;
+  const Conjugate_field_defaults defaults = conjugate_field_defaults(rule);
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), defaults.tolerance);
   internal::Local_global_parameters p;
-  Error_code code = internal::read_local_global_parameters(np, 100, p);
+  Error_code code = internal::read_local_global_parameters(np, defaults.iterations, defaults.maximum_lambda, p);
   if(code != Error_code::SUCCESS)
     return code;
   if(!std::isfinite(orthogonality) || !std::isfinite(tolerance))
@@ -150,15 +217,15 @@ Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, co
   auto driver = internal::make_local_global_driver<ConcurrencyTag>(bundle, np);
   // Curvature: given, or estimated.
   std::vector<std::array<double, 4> > S;
-  std::vector<double> Khat;
+  std::vector<double> Khat, kmax;
   if constexpr(!is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
-    code = internal::face_shape_operators(bundle, get_parameter(np, internal_np::principal_curvature_map), S, Khat);
+    code = internal::face_shape_operators(bundle, get_parameter(np, internal_np::principal_curvature_map), S, Khat, kmax);
   else
   {
     std::map<typename Bundle::face_descriptor, Principal_curvatures<typename Geom_traits::Vector_3> > estimated;
     code = estimate_principal_curvatures(bundle, boost::make_assoc_property_map(estimated), np);
     if(code == Error_code::SUCCESS)
-      code = internal::face_shape_operators(bundle, boost::make_assoc_property_map(estimated), S, Khat);
+      code = internal::face_shape_operators(bundle, boost::make_assoc_property_map(estimated), S, Khat, kmax);
   }
   if(code != Error_code::SUCCESS)
     return code;
@@ -179,19 +246,29 @@ Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, co
       r.scale = mean_square > 0 ? 1.0 / std::sqrt(mean_square) : 1.0;
     }
     r.free_residual = r.constrained_residual = 0;
+    double deviation_sum = 0, weight_sum = 0;
     for(std::size_t f = 0; f < F; ++f)
     {
       const auto uv = internal::frame_vectors(&field[4 * f]);
-      const double e = r.scale * r.scale * std::abs(internal::conjugacy_residual(S[f], uv.first, uv.second));
-      (driver.is_fixed(f) ? r.constrained_residual : r.free_residual) += e;
+      const double residual = std::abs(internal::conjugacy_residual(S[f], uv.first, uv.second));
+      (driver.is_fixed(f) ? r.constrained_residual : r.free_residual) += r.scale * r.scale * residual;
+      if(!driver.is_fixed(f) && Khat[f] > 0)
+      {
+        const double size = std::abs(uv.first) * std::abs(uv.second) * kmax[f];
+        deviation_sum += Khat[f] * (size > 0 ? residual / size : 0.0);
+        weight_sum += Khat[f];
+      }
     }
     r.residual = r.free_residual + r.constrained_residual;
+    r.mean_deviation = weight_sum > 0 ? deviation_sum / weight_sum : 0.0;
     r.residual_history.push_back(r.free_residual);
+    r.deviation_history.push_back(r.mean_deviation);
+    r.final_lambda = iteration > 0 ? lambda : 0.0;
     if(p.verbose && iteration > 0)
-      std::cerr << "conjugate field: iteration " << iteration << ", lambda " << lambda / p.lambda_factor
-                << ", residual (free faces) " << r.free_residual << ", (constrained faces) " << r.constrained_residual
-                << "\n";
-    return r.converged = r.free_residual < tolerance;
+      std::cerr << "conjugate field: iteration " << iteration << ", lambda " << lambda
+                << ", mean deviation (free faces) " << r.mean_deviation << ", residual (free faces) " << r.free_residual
+                << ", (constrained faces) " << r.constrained_residual << "\n";
+    return r.converged = paper_rule ? r.free_residual < tolerance : r.mean_deviation <= tolerance;
   };
   // The local step: the closest conjugate pair.
   auto local_step = [&](std::size_t f, const Complex& u, const Complex& v) {

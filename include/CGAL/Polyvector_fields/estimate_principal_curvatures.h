@@ -94,6 +94,54 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
   return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
+// The shape operator of a triangle from the variation of its vertex normals
+// (the second estimator, for vertices whose fit fails): the symmetric S of the
+// face plane that best maps each edge e = p_j - p_i onto n_j - n_i, in least
+// squares (S e_k = dn_k, 6 equations for the 3 entries of S). Returned in 3D,
+// row-major, with the package's sign (positive where the surface bends away
+// from the normals: they spread out, as on a sphere with outward normals).
+inline std::array<double, 9> normal_variation_tensor(const std::array<double, 3>* p, const std::array<double, 3>* n,
+                                                     const Face_frame& frame)
+{
+  double M[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } }, r[3] = { 0, 0, 0 };
+  for(int k = 0; k < 3; ++k)
+  {
+    const int i = k, j = (k + 1) % 3;
+    const std::array<double, 3> e = difference(p[j], p[i]), dn = difference(n[j], n[i]);
+    const double ex = dot(e, frame.e1), ey = dot(e, frame.e2), dx = dot(dn, frame.e1), dy = dot(dn, frame.e2);
+    // a ex + b ey = dx, b ex + c ey = dy: rows (ex, ey, 0) and (0, ex, ey).
+    const double rows[2][3] = { { ex, ey, 0 }, { 0, ex, ey } }, rhs[2] = { dx, dy };
+    for(int q = 0; q < 2; ++q)
+      for(int a = 0; a < 3; ++a)
+      {
+        r[a] += rows[q][a] * rhs[q];
+        for(int b = 0; b < 3; ++b)
+          M[a][b] += rows[q][a] * rows[q][b];
+      }
+  }
+  // The 3x3 normal equations, by Cramer's rule (M is positive definite for a
+  // non-degenerate triangle).
+  const double det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                     M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+  double x[3] = { 0, 0, 0 };
+  if(det != 0 && std::isfinite(det))
+    for(int c = 0; c < 3; ++c)
+    {
+      double A[3][3];
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b)
+          A[a][b] = (b == c) ? r[a] : M[a][b];
+      x[c] = (A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+              A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0])) / det;
+    }
+  std::array<double, 9> T;
+  for(int a = 0; a < 3; ++a)
+    for(int b = 0; b < 3; ++b)
+      T[3 * a + b] = x[0] * frame.e1[a] * frame.e1[b] + x[1] * (frame.e1[a] * frame.e2[b] + frame.e2[a] * frame.e1[b]) +
+                     x[2] * frame.e2[a] * frame.e2[b];
+  return T;
+}
+
 } // namespace internal
 
 /// \ingroup PkgPolyvectorFieldsCurvature
@@ -110,7 +158,19 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
 /// component of `v`. If the points do not determine the polynomial (for
 /// instance the 1-ring of a pole of a latitude-longitude sphere, whose outer
 /// points all lie on one circle), one more ring is added and the fit is done
-/// again, at most three times. The Monge frame of the fit is oriented with the vertex normal (the
+/// again, at most three times.
+///
+/// <b>Fallback.</b> A vertex that no fit determines (its connected component
+/// has too few points, as on a tetrahedron; its points are degenerate for the
+/// fit, as on an octahedron or a strip two vertices wide; its normal
+/// vanishes) does not fail the mesh: its tensor is the average, in its tangent
+/// plane, of the shape operators of its faces estimated from the variation of
+/// the vertex normals along their edges (the least-squares `S` with
+/// `S (p_j - p_i) = n_j - n_i` on the three edges). Flat regions get zero
+/// curvature there, as the paper wants (no conjugacy term). The number of such
+/// vertices is returned through the named parameter `fallback_vertices`.
+///
+/// The Monge frame of the fit is oriented with the vertex normal (the
 /// area-weighted sum of the normals of the incident faces). For each face, the
 /// curvature tensor of each of its three vertices is rotated into the face
 /// plane (by the smallest rotation that takes the fitted normal onto the face
@@ -182,6 +242,12 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
 ///                       values smooth noisy meshes.}
 ///     \cgalParamExtra{must be at least `1`; otherwise `Error_code::INVALID_PARAMETER` is returned}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{fallback_vertices}
+///     \cgalParamDescription{receives the number of vertices whose curvature comes from the fallback estimator
+///                           (`CGAL::Polyvector_fields::parameters::fallback_vertices()`)}
+///     \cgalParamType{`std::size_t&`}
+///     \cgalParamDefault{not reported}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns
@@ -189,15 +255,7 @@ inline bool curvature_all_finite(const std::array<double, 3>& a)
 /// - `Error_code::EMPTY_MESH` if `tm` has no face;
 /// - `Error_code::NON_TRIANGLE_FACE` if a face is not a triangle;
 /// - `Error_code::DEGENERATE_FACE` if a face has zero area or a non-finite coordinate;
-/// - `Error_code::CURVATURE_ESTIMATION_FAILED` if a vertex cannot be fitted:
-///   - its whole connected component has fewer than `(d+1)(d+2)/2` vertices (e.g. a
-///     tetrahedron, 4 points, or a lone triangle);
-///   - its neighbourhood, grown by up to three extra rings, does not determine a polynomial of
-///     degree `d` (condition number of the least-squares system above `1e10`), e.g. a strip of
-///     triangles two vertices wide, whose points lie on two lines, or a regular octahedron,
-///     whose 6 points have an isotropic covariance: the fitting plane is then a coordinate
-///     plane, onto which two opposite vertices project at the same position;
-///   - its normal vanishes, or the fit gives a non-finite value;
+/// - `Error_code::CURVATURE_ESTIMATION_FAILED` only if a non-finite value comes out (no vertex can be estimated);
 /// - `Error_code::SUCCESS` otherwise.
 ///
 /// \sa `Principal_curvatures`, `shape_operator()`, `select_curvature_constraints()`
@@ -290,6 +348,7 @@ Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
   const std::size_t boundary_target_points = internal::curvature_boundary_target_points(degree_fitting);
 
   std::vector<internal::Curvature_vertex_fit> fits(nv);
+  std::vector<char> fallback(nv, 0);
   std::vector<std::size_t> visit_stamp(nv, 0);
   std::vector<std::size_t> ring, next_ring;
   std::vector<Local_kernel::Point_3> neighbourhood;
@@ -302,7 +361,10 @@ Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
 
     const double normal_length = std::sqrt(internal::dot(vertex_normals[vi], vertex_normals[vi]));
     if(!(normal_length > 1e-12 * incident_area[vi]))
-      return Error_code::CURVATURE_ESTIMATION_FAILED;
+    {
+      fallback[vi] = 1;  // no normal to orient a fit
+      continue;
+    }
 
     // The neighbourhood grows ring by ring, through edges, over vertices of faces.
     const std::size_t stamp = vi + 1;
@@ -339,17 +401,25 @@ Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
     // a fan whose outer vertices lie on one conic) gets one more ring, at most
     // `curvature_max_extra_rings` times (a strip two vertices wide never
     // determines a quadric, however far it is grown).
+    // A vertex that no fit determines falls back to the second estimator below.
     Monge_form monge;
+    bool fitted = false;
     for(std::size_t extra_rings = 0;; ++extra_rings)
     {
       if(neighbourhood.size() >= minimal_points)
       {
         monge = jet_fitting(neighbourhood.begin(), neighbourhood.end(), degree_fitting, degree_monge);
-        if(jet_fitting.condition_number() <= internal::curvature_max_condition_number)
+        fitted = jet_fitting.condition_number() <= internal::curvature_max_condition_number;
+        if(fitted)
           break;
       }
       if(exhausted || extra_rings == internal::curvature_max_extra_rings || !grow_one_ring())
-        return Error_code::CURVATURE_ESTIMATION_FAILED;
+        break;
+    }
+    if(!fitted)
+    {
+      fallback[vi] = 1;
+      continue;
     }
     monge.comply_wrt_given_normal(Local_kernel::Vector_3(vertex_normals[vi][0], vertex_normals[vi][1],
                                                          vertex_normals[vi][2]));
@@ -365,7 +435,79 @@ Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
     fit.k_min = std::ldexp(monge.principal_curvatures(1), -scale_exponent);
     if(!internal::curvature_all_finite(fit.normal) || !internal::curvature_all_finite(fit.d_max)
        || !internal::curvature_all_finite(fit.d_min) || !std::isfinite(fit.k_max) || !std::isfinite(fit.k_min))
-      return Error_code::CURVATURE_ESTIMATION_FAILED;
+      fallback[vi] = 1;
+  }
+
+  // ---- the vertices whose fit failed: the normal-variation tensors of their
+  // faces, averaged in the vertex's tangent plane (zero on a flat region)
+  std::vector<std::array<double, 9> > face_tensor;
+  std::size_t fallbacks = 0;
+  for(std::size_t vi = 0; vi < nv; ++vi)
+    fallbacks += (in_face[vi] && fallback[vi]) ? 1 : 0;
+  if(fallbacks > 0)
+  {
+    std::vector<std::array<double, 3> > unit_normals(nv);
+    for(std::size_t vi = 0; vi < nv; ++vi)
+    {
+      const double l = std::sqrt(internal::dot(vertex_normals[vi], vertex_normals[vi]));
+      unit_normals[vi] = l > 0 ? std::array<double, 3>{ vertex_normals[vi][0] / l, vertex_normals[vi][1] / l,
+                                                        vertex_normals[vi][2] / l }
+                               : std::array<double, 3>{ 0., 0., 0. };
+    }
+    face_tensor.resize(nf);
+    for(std::size_t fi = 0; fi < nf; ++fi)
+    {
+      const halfedge_descriptor h = halfedge(bundle.face(fi), tm);
+      const std::size_t c[3] = { bundle.index(source(h, tm)), bundle.index(target(h, tm)),
+                                 bundle.index(target(next(h, tm), tm)) };
+      const std::array<double, 3> p[3] = { points[c[0]], points[c[1]], points[c[2]] };
+      const std::array<double, 3> n[3] = { unit_normals[c[0]], unit_normals[c[1]], unit_normals[c[2]] };
+      face_tensor[fi] = internal::normal_variation_tensor(p, n, bundle.frame(fi));
+    }
+    for(std::size_t vi = 0; vi < nv; ++vi)
+    {
+      if(!in_face[vi] || !fallback[vi])
+        continue;
+      std::array<double, 9> T{};
+      std::size_t count = 0;
+      std::array<double, 3> normal = unit_normals[vi];
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(bundle.vertex(vi), tm))
+      {
+        if(CGAL::is_border(h, tm))
+          continue;
+        const std::size_t fi = bundle.index(face(h, tm));
+        for(int a = 0; a < 9; ++a)
+          T[a] += face_tensor[fi][a];
+        ++count;
+        if(normal == std::array<double, 3>{ 0., 0., 0. })
+          normal = bundle.frame(fi).normal;
+      }
+      // A frame (t1, t2) of the vertex's tangent plane, and T there.
+      const std::array<double, 3> axis = std::abs(normal[0]) < 0.9 ? std::array<double, 3>{ 1., 0., 0. }
+                                                                   : std::array<double, 3>{ 0., 1., 0. };
+      std::array<double, 3> t1 = internal::cross(normal, axis);
+      const double l1 = std::sqrt(internal::dot(t1, t1));
+      t1 = { t1[0] / l1, t1[1] / l1, t1[2] / l1 };
+      const std::array<double, 3> t2 = internal::cross(normal, t1);
+      auto form = [&](const std::array<double, 3>& x, const std::array<double, 3>& y) {
+        double value = 0;
+        for(int a = 0; a < 3; ++a)
+          for(int b = 0; b < 3; ++b)
+            value += x[a] * T[3 * a + b] * y[b];
+        return value / double((std::max)(count, std::size_t(1)));
+      };
+      const internal::Symmetric_eigen_2 eigen = internal::symmetric_eigen_2(form(t1, t1), form(t1, t2), form(t2, t2));
+      const double cs = std::cos(eigen.angle), sn = std::sin(eigen.angle);
+      internal::Curvature_vertex_fit& fit = fits[vi];
+      fit.normal = normal;
+      fit.d_max = { cs * t1[0] + sn * t2[0], cs * t1[1] + sn * t2[1], cs * t1[2] + sn * t2[2] };
+      fit.d_min = internal::cross(normal, fit.d_max);
+      // In Monge's sign, the opposite of ours.
+      fit.k_max = std::ldexp(-eigen.lambda_max, -scale_exponent);  // the points are scaled by 2^-scale_exponent
+      fit.k_min = std::ldexp(-eigen.lambda_min, -scale_exponent);
+      if(!internal::curvature_all_finite(fit.d_max) || !std::isfinite(fit.k_max) || !std::isfinite(fit.k_min))
+        return Error_code::CURVATURE_ESTIMATION_FAILED;
+    }
   }
 
   // ---- per face: average the three tensors in the face frame, diagonalise
@@ -410,6 +552,9 @@ Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
 
   for(std::size_t fi = 0; fi < nf; ++fi)
     put(curvature_map, bundle.face(fi), values[fi]);
+  if(std::size_t* count = choose_parameter(get_parameter(np, Polyvector_fields::internal_np::fallback_vertices),
+                                           static_cast<std::size_t*>(nullptr)))
+    *count = fallbacks;
   return Error_code::SUCCESS;
 }
 

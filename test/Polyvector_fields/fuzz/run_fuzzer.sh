@@ -57,10 +57,9 @@ options=(-runs="$runs" -max_len=4096 -timeout=2 -report_slow_units=1 -print_fina
 if [[ "${FORK:-0}" == 1 ]]; then
   options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
 fi
-# The seeds: corpus/TARGET but its bug_* files, which crash until the header is fixed.
+# The seeds: all of corpus/TARGET, the bug_* regression inputs included (the
+# bugs they found are fixed; see FOUND_BUGS.md).
 rm -rf "$work/seeds"; mkdir -p "$work/seeds"
-for file in "$here/corpus/$target"/*; do
-  [[ -e "$file" && "$(basename "$file")" != bug_* ]] && cp "$file" "$work/seeds/"
-done
+cp "$here/corpus/$target"/* "$work/seeds/"
 cd "$work"
 "$exe" "${options[@]}" "$@" "$work/corpus" "$work/seeds" 2>&1 | tee "$work/log.txt"

@@ -33,6 +33,7 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -49,23 +50,25 @@ struct Local_global_parameters
 {
   double initial_lambda = 100;
   double lambda_factor = 1.5;
+  double maximum_lambda = 0;  // lambda stops growing there (read_local_global_parameters() sets it)
   std::size_t maximum_iterations = 0;
   bool verbose = false;
 };
 
 template <typename NamedParameters>
 Error_code read_local_global_parameters(const NamedParameters& np, std::size_t default_iterations,
-                                        Local_global_parameters& p)
+                                        double default_maximum_lambda, Local_global_parameters& p)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   p.initial_lambda = choose_parameter(get_parameter(np, internal_np::initial_lambda), 100.0);
   p.lambda_factor = choose_parameter(get_parameter(np, internal_np::lambda_factor), 1.5);
+  p.maximum_lambda = choose_parameter(get_parameter(np, internal_np::maximum_lambda), default_maximum_lambda);
   p.maximum_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), default_iterations);
   p.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  if(!std::isfinite(p.initial_lambda) || !std::isfinite(p.lambda_factor))
+  if(!std::isfinite(p.initial_lambda) || !std::isfinite(p.lambda_factor) || std::isnan(p.maximum_lambda))
     return Error_code::NON_FINITE_VALUE;
-  if(!(p.initial_lambda > 0) || !(p.lambda_factor >= 1))
+  if(!(p.initial_lambda > 0) || !(p.lambda_factor >= 1) || !(p.maximum_lambda >= p.initial_lambda))
     return Error_code::INVALID_PARAMETER;
   return Error_code::SUCCESS;
 }
@@ -117,8 +120,10 @@ public:
 
   // The iterations from `c` (the smooth field). `scale[f]` is s_f;
   // `local_step(f, u, v)` returns the frame of free face f after the local
-  // step; `converged(c, iterations, lambda)` measures the field (and may
-  // report it). Returns SOLVER_FAILURE if a global step fails.
+  // step; `converged(c, iterations, lambda)` measures the field after the
+  // global step of weight lambda (0 for the smooth field), and may report
+  // it. Lambda grows by lambda_factor up to maximum_lambda; at the cap the
+  // factorization is reused. Returns SOLVER_FAILURE if a global step fails.
   template <typename LocalStep, typename Converged>
   Error_code iterate(const std::vector<double>& scale, double orthogonality, const Local_global_parameters& p,
                      const LocalStep& local_step, const Converged& converged, std::vector<Complex>& c,
@@ -126,10 +131,10 @@ public:
   {
     const std::size_t F = m_bundle.number_of_faces();
     std::vector<Complex> targets(4 * F);
-    double lambda = p.initial_lambda;
+    double lambda = p.initial_lambda, factored_lambda = 0;
     iterations = 0;
     bool first_step = true;
-    while(!converged(c, iterations, lambda) && iterations < p.maximum_iterations)
+    while(!converged(c, iterations, factored_lambda) && iterations < p.maximum_iterations)
     {
       for(std::size_t f = 0; f < F; ++f)
       {
@@ -138,12 +143,17 @@ public:
         frame_coefficients(moved.first, moved.second, &targets[4 * f]);
       }
       set_data_term(lambda, scale, orthogonality, targets);
-      const bool factored = first_step ? m_system.factor() : m_system.refactor();
+      // At the cap the matrix does not change: only the targets, hence only
+      // the right-hand side, are new, and the factorization is reused.
+      bool factored = true;
+      if(first_step || lambda != factored_lambda)
+        factored = first_step ? m_system.factor() : m_system.refactor();
+      factored_lambda = lambda;
       first_step = false;
       if(!factored || !m_system.solve(c))
         return Error_code::SOLVER_FAILURE;
       ++iterations;
-      lambda *= p.lambda_factor;
+      lambda = (std::min)(lambda * p.lambda_factor, p.maximum_lambda);
     }
     return Error_code::SUCCESS;
   }

@@ -58,6 +58,8 @@ CGAL_PVF_ADD_NAMED_PARAMETER(angle_bound_t, angle_bound, angle_bound)
 CGAL_PVF_ADD_NAMED_PARAMETER(orthogonality_weight_t, orthogonality_weight, orthogonality_weight)
 CGAL_PVF_ADD_NAMED_PARAMETER(initial_lambda_t, initial_lambda, initial_lambda)
 CGAL_PVF_ADD_NAMED_PARAMETER(lambda_factor_t, lambda_factor, lambda_factor)
+CGAL_PVF_ADD_NAMED_PARAMETER(maximum_lambda_t, maximum_lambda, maximum_lambda)
+CGAL_PVF_ADD_NAMED_PARAMETER(stopping_rule_t, stopping_rule, stopping_rule)
 CGAL_PVF_ADD_NAMED_PARAMETER(tolerance_t, tolerance, tolerance)
 CGAL_PVF_ADD_NAMED_PARAMETER(principal_curvature_map_t, principal_curvature_map, principal_curvature_map)
 
@@ -97,6 +99,9 @@ CGAL_PVF_ADD_NAMED_PARAMETER(constrained_fraction_t, constrained_fraction, const
 
 /// `std::string&`: receives, when a reader fails, the reason and where it is in the input.
 CGAL_PVF_ADD_REFERENCE_PARAMETER(error_message_t, error_message, error_message, std::string)
+/// `std::size_t&`: receives the number of vertices whose curvature comes from
+/// the fallback estimator of `estimate_principal_curvatures()`.
+CGAL_PVF_ADD_REFERENCE_PARAMETER(fallback_vertices_t, fallback_vertices, fallback_vertices, std::size_t)
 
 // The per-face arrays of `IO::write_vtk()`, named, and its constrained faces
 // as one flag per face (in the order of faces(tm)) or as a list of faces.

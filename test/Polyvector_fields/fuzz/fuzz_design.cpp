@@ -144,7 +144,9 @@ inline void run(const std::uint8_t* data, std::size_t size)
       PVF_FUZZ_CHECK(finite(r), what + ": a non-finite root " + vector_text(r) + " on face " +
                                   std::to_string(std::size_t(f)));
       const double along_normal = r.x() * n[0] + r.y() * n[1] + r.z() * n[2];
-      PVF_FUZZ_CHECK(std::abs(along_normal) <= 1e-9 * std::sqrt(r.squared_length()),
+      // |r| by hypot: squared_length() underflows to 0 for roots below 1e-154.
+      const double length = std::hypot(r.x(), std::hypot(r.y(), r.z()));
+      PVF_FUZZ_CHECK(std::abs(along_normal) <= 1e-9 * length,
                      what + ": root " + vector_text(r) + " of face " + std::to_string(std::size_t(f)) +
                        " is not in the face plane");
     }

@@ -29,7 +29,7 @@ import sys
 import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-PROGRAMS = ["pvf_design_benchmark", "pvf_frame_field_benchmark", "pvf_peak_memory"]
+PROGRAMS = ["pvf_design_benchmark", "pvf_frame_field_benchmark", "pvf_quad_benchmark", "pvf_peak_memory"]
 # Benchmark solver name -> pvf_peak_memory arguments (solver, mode).
 MEMORY_SOLVERS = {"SimplicialLDLT": ("ldlt", "sequential"), "SimplicialLDLT_parallel": ("ldlt", "parallel"),
                   "CHOLMOD": ("cholmod", "sequential"), "CHOLMOD_parallel": ("cholmod", "parallel"),
@@ -164,7 +164,7 @@ def targets(design, frames, memory):
     return out + lines + [""]
 
 
-def report(design, frames, memory, max_level, elapsed):
+def report(design, frames, memory, max_level, elapsed, quads=None):
     out = []
     out.append("# Polyvector fields benchmark results\n")
     out.append("Release build, %s, %d cores; bumpy.off after 1..%d Loop subdivisions; "
@@ -277,6 +277,64 @@ def report(design, frames, memory, max_level, elapsed):
     out.append("## Frame-field algorithms to convergence\n")
     out.append(table(["benchmark", "solver", "faces", "time s", "iterations", "converged", "notes"], rows))
     out.append("")
+
+    rows = []
+    for b in frames["benchmarks"]:
+        if b.get("run_type", "iteration") != "iteration" or split_name(b["name"])[0] != "BM_conjugate_curvature":
+            continue
+        if "error_occurred" in b:
+            rows.append([b.get("label", b["name"]), "-", "-", "-", "-", "-", "-", "error: " + b.get("error_message", "")])
+            continue
+        rows.append([b.get("label", b["name"]), int(b["faces"]), int(b["constraints"]), fmt(seconds(b)),
+                     "%d%s" % (int(b["iterations"]), "" if b["converged"] else " (not converged)"),
+                     "%d -> %d" % (int(b["smooth_singularities"]), int(b["singularities"])),
+                     "%s -> %s" % (fmt(b["weighted_deviation_start"]), fmt(b["weighted_deviation"])),
+                     fmt(b["mean_deviation_all_faces"])])
+    out.append("## Conjugate fields from 1% curvature constraints (default stopping rule)\n")
+    out.append("Time of the conjugate field alone (curvature and constraints excluded). Singularities: of the smooth "
+               "field it starts from, then of the result. Deviation: |u^T S v| / (|u| |v| max|k|), weighted by "
+               "Khat over the free faces as the stopping rule weighs it (start -> end), and the plain mean over "
+               "all faces.\n")
+    out.append(table(["mesh", "faces", "constraints", "time s", "iterations", "singularities",
+                      "weighted deviation", "mean deviation, all faces"], rows))
+    out.append("")
+    for b in frames["benchmarks"]:
+        p = split_name(b["name"])
+        if b.get("run_type", "iteration") != "iteration" or "error_occurred" in b:
+            continue
+        if p[0] == "BM_conjugate_step_bunny":
+            out.append("- bunny (%d faces), one conjugate step: %s s; a fresh factorization of the same system: "
+                       "%s s; ratio %s (target <= 0.2)" % (int(b["faces"]), fmt(b["per_iteration_s"]),
+                                                           fmt(b["fresh_factorization_s"]),
+                                                           fmt(b["iteration_over_factorization"])))
+        elif p[0] == "BM_angle_bound_bunny":
+            out.append("- bunny (%d faces), angle bound 70 degrees from %d random constraints: %s s, %d iterations%s, "
+                       "smallest free angle %s degrees" % (int(b["faces"]), int(b["constraints"]), fmt(seconds(b)),
+                                                           int(b["iterations"]),
+                                                           "" if b["converged"] else " (not converged)",
+                                                           fmt(b["min_free_angle_deg"])))
+    out.append("")
+    if quads:
+        rows = []
+        for b in quads["benchmarks"]:
+            if b.get("run_type", "iteration") != "iteration":
+                continue
+            if "error_occurred" in b:
+                rows.append([b.get("label", b["name"])] + ["-"] * 9 + ["error: " + b.get("error_message", "")])
+                continue
+            rows.append([b.get("label", b["name"]), int(b["faces"]), int(b["quads"]), fmt(b["field_s"]),
+                         "%s (factorization %s, stiffening %s)" % (fmt(b["map_s"]), fmt(b["map_factorization_s"]),
+                                                                   fmt(b["map_stiffening_s"])),
+                         fmt(b["extraction_s"]), fmt(b["planarity_s"]),
+                         "%s (%d iterations, closest points %s)" % (fmt(b["planarization_s"]),
+                                                                    int(b["planarization_iterations"]),
+                                                                    fmt(b["planarization_closest_points_s"])),
+                         "%s%% / %s%%" % (fmt(100 * b["planarity_max_before"]), fmt(100 * b["planarity_mean_before"])),
+                         "%s%%" % fmt(100 * b["planarity_max_after"]), int(b["flipped_faces"])])
+        out.append("## Planar-quad pipeline, stage by stage\n")
+        out.append(table(["run", "faces", "quads", "field s", "map s", "extraction s", "planarity s", "planarization s",
+                          "planarity before max / mean", "max after", "flipped"], rows))
+        out.append("")
     return "\n".join(out)
 
 
@@ -296,10 +354,10 @@ def main():
     resdir = os.path.join(args.build_dir, "results")
     if args.report_only:
         loaded = []
-        for name in ("design.json", "frames.json", "memory.json"):
+        for name in ("design.json", "frames.json", "memory.json", "quads.json"):
             with open(os.path.join(resdir, name)) as f:
                 loaded.append(json.load(f))
-        text = report(loaded[0], loaded[1], loaded[2], args.max_level, float("nan"))
+        text = report(loaded[0], loaded[1], loaded[2], args.max_level, float("nan"), loaded[3])
         with open(args.out, "w") as f:
             f.write(text + "\n")
         print(text)
@@ -313,6 +371,7 @@ def main():
     extra = ["--benchmark_filter=" + args.filter] if args.filter else []
     design = run_benchmark(os.path.join(bindir, "pvf_design_benchmark"), os.path.join(resdir, "design.json"), env, extra)
     frames = run_benchmark(os.path.join(bindir, "pvf_frame_field_benchmark"), os.path.join(resdir, "frames.json"), env)
+    quads = run_benchmark(os.path.join(bindir, "pvf_quad_benchmark"), os.path.join(resdir, "quads.json"), env)
 
     # One process per (level, solver, mode) that the design benchmark ran.
     variants = sorted({(split_name(b["name"])[1], int(split_name(b["name"])[2])) for b in design["benchmarks"]
@@ -330,7 +389,7 @@ def main():
     with open(os.path.join(resdir, "memory.json"), "w") as f:
         json.dump(memory, f, indent=1)
 
-    text = report(design, frames, memory, args.max_level, time.time() - start)
+    text = report(design, frames, memory, args.max_level, time.time() - start, quads)
     with open(args.out, "w") as f:
         f.write(text + "\n")
     print(text)

@@ -7,13 +7,17 @@
 # It is not part of CGAL.
 """Regenerates every figure of the user manual (doc/Polyvector_fields/fig/*.png).
 
-    /usr/bin/python3 doc/Polyvector_fields/make_figures.py [BUILD_DIR]
+    /usr/bin/python3 doc/Polyvector_fields/make_figures.py [BUILD_DIR] [--parametrization]
 
 BUILD_DIR (default: build/ in the repository) is a CMake build folder of the
 package. The program design_polyvector_field is built there if it is missing.
 It is run on the bundled meshes; its legacy VTK outputs are written to a
 temporary folder, read back here, and drawn headless with matplotlib (Debian:
 python3-matplotlib, installed by `scripts/install_dependencies.sh --doc`).
+With --parametrization only the figures of the integer-grid maps and of the
+quad meshes are made: the program's OBJ outputs (one uv per corner) are drawn
+as a checkerboard of period one uv unit, rasterised per pixel, and its quad
+meshes (VTK with the planarity of each face) coloured by planarity.
 
 Each picture is an orthographic view from a fixed camera. Faces are flat
 shaded and drawn back to front; a glyph (one short segment per vector from the
@@ -333,11 +337,198 @@ def truncated(name, low, high):
 
 
 def main():
-    build_dir = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build"))
+    arguments = [a for a in sys.argv[1:] if not a.startswith("--")]
+    only_parametrization = "--parametrization" in sys.argv[1:]  # the integer-grid maps and the quad meshes
+    build_dir = os.path.abspath(arguments[0] if arguments else os.path.join(ROOT, "build"))
     exe = designer(build_dir)
     os.makedirs(FIG, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="pvf_figures_") as work:
-        figures(exe, work)
+        if not only_parametrization:
+            figures(exe, work)
+        parametrization_figures(exe, work)
+        planar_quads_figure(exe, work)
+
+
+# ---------------------------------------------------------------------------
+# Integer-grid maps: a checkerboard of period one uv unit (one quad) on the surface
+# ---------------------------------------------------------------------------
+
+
+def read_uv_obj(path):
+    """The OBJ of IO::write_integer_grid_map_OBJ(): points, triangles, and the uv of each corner (F x 3 x 2)."""
+    points, uvs, faces, corners = [], [], [], []
+    with open(path) as f:
+        for line in f:
+            t = line.split()
+            if not t:
+                continue
+            if t[0] == "v":
+                points.append([float(x) for x in t[1:4]])
+            elif t[0] == "vt":
+                uvs.append([float(x) for x in t[1:3]])
+            elif t[0] == "f":
+                pairs = [c.split("/") for c in t[1:]]
+                faces.append([int(a) - 1 for a, _ in pairs])
+                corners.append([int(b) - 1 for _, b in pairs])
+    uvs = np.array(uvs)
+    return np.array(points), np.array(faces, dtype=np.int64), uvs[np.array(corners, dtype=np.int64)]
+
+
+def checkerboard(points, faces, corner_uv, ax, azimuth, elevation, title, resolution=900):
+    """Rasterises the surface with a per-pixel depth test; each pixel takes the parity of floor(u) + floor(v)."""
+    rot = camera(azimuth, elevation)
+    q = points @ rot.T
+    p2, depth = q[:, :2], q[:, 2]
+    normal = np.cross(points[faces[:, 1]] - points[faces[:, 0]], points[faces[:, 2]] - points[faces[:, 0]])
+    normal /= np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
+    facing = normal @ rot[2]
+    light = np.array([0.35, 0.45, 0.82])
+    light /= np.linalg.norm(light)
+    lambert = np.abs((normal @ rot.T) @ light)  # open meshes are seen from both sides
+    shade = 0.35 + 0.65 * lambert
+    lo, hi = p2.min(axis=0), p2.max(axis=0)
+    scale = (resolution - 1) / (hi - lo).max()
+    size = np.ceil((hi - lo) * scale).astype(int) + 1
+    pix = (p2 - lo) * scale
+    zbuf = np.full((size[1], size[0]), -np.inf)
+    image = np.ones((size[1], size[0], 3))
+    light_square, dark_square = np.array([0.93, 0.93, 0.90]), np.array([0.20, 0.36, 0.62])
+    for f in range(len(faces)):
+        a, b, c = pix[faces[f]]
+        det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+        if abs(det) < 1e-12:
+            continue
+        x0, y0 = np.floor(np.minimum(np.minimum(a, b), c)).astype(int)
+        x1, y1 = np.ceil(np.maximum(np.maximum(a, b), c)).astype(int)
+        xs, ys = np.meshgrid(np.arange(max(x0, 0), min(x1, size[0] - 1) + 1),
+                             np.arange(max(y0, 0), min(y1, size[1] - 1) + 1))
+        px, py = xs.ravel() + 0.0, ys.ravel() + 0.0
+        l1 = ((px - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (py - a[1])) / det
+        l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) / det
+        l0 = 1 - l1 - l2
+        inside = (l0 >= -1e-9) & (l1 >= -1e-9) & (l2 >= -1e-9)
+        if not inside.any():
+            continue
+        l0, l1, l2 = l0[inside], l1[inside], l2[inside]
+        ix, iy = xs.ravel()[inside], ys.ravel()[inside]
+        z = l0 * depth[faces[f, 0]] + l1 * depth[faces[f, 1]] + l2 * depth[faces[f, 2]]
+        front = z > zbuf[iy, ix]
+        if not front.any():
+            continue
+        ix, iy, z = ix[front], iy[front], z[front]
+        w = np.stack([l0[front], l1[front], l2[front]], axis=1)
+        uv = w @ corner_uv[f]
+        parity = (np.floor(uv[:, 0]) + np.floor(uv[:, 1])).astype(np.int64) % 2
+        colour = np.where(parity[:, None] == 0, light_square, dark_square) * shade[f]
+        zbuf[iy, ix] = z
+        image[iy, ix] = colour
+    ax.imshow(image, origin="lower", interpolation="bilinear")
+    ax.axis("off")
+    ax.set_title(title, fontsize=9)
+
+
+def parametrization_figures(exe, work):
+    inspired = ["--mesh", os.path.join(DATA, "inspired_mesh.obj"),
+                "--dmat-b", os.path.join(DATA, "inspired_mesh_b.dmat"),
+                "--dmat-bc", os.path.join(DATA, "inspired_mesh_bc.dmat"), "--edge-length", "0.82"]
+    runs = [("inspired_smooth", "inspired_mesh, smooth field", inspired, (-70, 50)),
+            ("inspired_conjugate", "inspired_mesh, conjugate field", inspired + ["--conjugate"], (-70, 50)),
+            ("bumpy", "bumpy, 1% curvature constraints",
+             ["--mesh", os.path.join(DATA, "bumpy.off"), "--curvature-constraints", "1"], (35, 28)),
+            ("eight", "eight (genus 2), 1% curvature constraints",
+             ["--mesh", os.path.join(DATA, "eight.off"), "--curvature-constraints", "1"], (-90, 55)),
+            ("fandisk", "fandisk, sharp edges (30\u00b0)",
+             ["--mesh", os.path.join(DATA, "fandisk.off"), "--sign-symmetric", "--sharp-edges", "30"], (40, 30))]
+    fig = plt.figure(figsize=(12.0, 8.2), dpi=100)
+    for i, (name, what, args, view) in enumerate(runs):
+        obj = os.path.join(work, name + ".param.obj")
+        f = run(exe, work, name, args + ["--parametrize", "--out-param", obj])
+        line = next(l for l in f["report"].splitlines() if l.startswith("parametrization"))
+        flipped = int(line.split(" flipped faces")[0].split()[-1])
+        assert flipped == 0, line
+        points, faces, corner_uv = read_uv_obj(obj)
+        ax = fig.add_axes([(i % 3) / 3.0 + 0.003, 0.51 - 0.5 * (i // 3), 0.327, 0.41])
+        checkerboard(points, faces, corner_uv, ax, view[0], view[1],
+                     "%s\n%d faces, %d singularities, 0 flipped" % (what, len(faces), len(f["singular_vertices"])))
+    save(fig, "integer_grid_maps.png")
+
+
+def read_quads_vtk(path):
+    """The POLYDATA of IO::write_quad_mesh_VTK(): points, polygons and the planarity of each."""
+    with open(path) as f:
+        tokens = f.read().split()
+    pos = tokens.index("POINTS")
+    n = int(tokens[pos + 1])
+    points = np.array(tokens[pos + 3:pos + 3 + 3 * n], dtype=float).reshape(n, 3)
+    pos = tokens.index("POLYGONS")
+    count = int(tokens[pos + 1])
+    i = pos + 3
+    polygons = []
+    for _ in range(count):
+        k = int(tokens[i])
+        polygons.append(np.array(tokens[i + 1:i + 1 + k], dtype=np.int64))
+        i += k + 1
+    pos = tokens.index("planarity", i)
+    planarity = np.array(tokens[pos + 5:pos + 5 + count], dtype=float)  # after "double 1 LOOKUP_TABLE default"
+    return points, polygons, planarity
+
+
+def quads(points, polygons, planarity, ax, azimuth, elevation, title, vmax, cmap):
+    """Flat-shaded polygons, back to front, coloured by planarity (clamped at vmax)."""
+    rot = camera(azimuth, elevation)
+    q = points @ rot.T
+    light = np.array([0.35, 0.45, 0.82])
+    light /= np.linalg.norm(light)
+    shapes, rgb, depth = [], [], []
+    norm = colors.Normalize(0, vmax)
+    for poly, value in zip(polygons, planarity):
+        p = points[poly]
+        normal = np.cross(p[2] - p[0], p[3 % len(p)] - p[1])
+        normal /= max(np.linalg.norm(normal), 1e-300)
+        shade = 0.55 + 0.45 * abs((normal @ rot.T) @ light)
+        rgb.append(np.clip(np.array(cm.get_cmap(cmap)(norm(min(value, vmax)))[:3]) * shade, 0, 1))
+        shapes.append(q[poly, :2])
+        depth.append(q[poly, 2].mean())
+    order = np.argsort(depth)
+    ax.add_collection(PolyCollection([shapes[i] for i in order], facecolors=[rgb[i] for i in order],
+                                     edgecolors="#202020", linewidths=0.12))
+    pad = 0.03 * (q[:, :2].max(axis=0) - q[:, :2].min(axis=0)).max()
+    ax.set_xlim(q[:, 0].min() - pad, q[:, 0].max() + pad)
+    ax.set_ylim(q[:, 1].min() - pad, q[:, 1].max() + pad)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.set_title(title, fontsize=9)
+
+
+def planar_quads_figure(exe, work):
+    """The paper's Fig. 13: quads of the smooth and the conjugate field, before and after planarization."""
+    inspired = ["--mesh", os.path.join(DATA, "inspired_mesh.obj"),
+                "--dmat-b", os.path.join(DATA, "inspired_mesh_b.dmat"),
+                "--dmat-bc", os.path.join(DATA, "inspired_mesh_bc.dmat"), "--edge-length", "0.82"]
+    cmap, vmax = truncated("RdYlBu_r", 0.0, 1.0), 0.01
+    fig = plt.figure(figsize=(11.0, 8.6), dpi=100)
+    for column, (name, what, extra) in enumerate((("smooth", "smooth field", []),
+                                                  ("conjugate", "conjugate field", ["--conjugate"]))):
+        for row, planarize in enumerate((False, True)):
+            tag = "quads_%s%s" % (name, "_planar" if planarize else "")
+            args = inspired + extra + ["--quad-mesh", os.path.join(work, tag + ".off")]
+            if planarize:
+                args.append("--planarize")
+            f = run(exe, work, tag, args)
+            points, polygons, planarity = read_quads_vtk(os.path.join(work, tag + ".quads.vtk"))
+            title = "%s, %s: %d quads\nplanarity max %.2f%%, mean %.2f%%" % (
+                what, "planarized to 1%" if planarize else "extracted", len(polygons),
+                100 * planarity.max(), 100 * planarity.mean())
+            if planarize:
+                line = next(l for l in f["report"].splitlines() if l.startswith("planarity"))
+                iterations = line.split("after ")[1].split(" iterations")[0] if "after " in line else "?"
+                title += " (%s iterations)" % iterations
+            ax = fig.add_axes([0.005 + 0.47 * column, 0.53 - 0.47 * row, 0.46, 0.42])
+            quads(points, polygons, planarity, ax, -70, 50, title, vmax, cmap)
+    cax = fig.add_axes([0.92, 0.2, 0.015, 0.6])
+    bar = fig.colorbar(cm.ScalarMappable(norm=colors.Normalize(0, 100 * vmax), cmap=cmap), cax=cax)
+    bar.set_label("planarity (%); 1% and above in red", fontsize=8)
+    save(fig, "planar_quads_inspired.png")
 
 
 def legend(fig, entries, y=0.01):

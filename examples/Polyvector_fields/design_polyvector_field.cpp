@@ -10,7 +10,9 @@
 // Reads a mesh and constraints, designs the smoothest N-PolyVector field, and
 // writes the field (.rawfield), its singularities (.sings) and a VTK file for
 // ParaView. Frame fields (N = 4, sign-symmetric) can then be optimised to
-// bound their angles or to be conjugate (paper Section 4). With no argument it
+// bound their angles or to be conjugate (paper Section 4), and guide a
+// seamless integer-grid map (--parametrize, written as an OBJ file with one
+// texture coordinate per corner). With no argument it
 // designs a frame field on the bundled architectural mesh from its 84 bundled
 // constraints and writes output/inspired_mesh.{rawfield,sings,vtk}. Run with
 // --help for the options.
@@ -24,21 +26,30 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
+#include <CGAL/Polyvector_fields/IO/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/IO/quad_mesh.h>
 #include <CGAL/Polyvector_fields/IO/rawfield.h>
 #include <CGAL/Polyvector_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Polyvector_fields/IO/singularities.h>
 #include <CGAL/Polyvector_fields/IO/vtk.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
+#include <CGAL/Polyvector_fields/Smoothness_weights.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
 #include <CGAL/Polyvector_fields/conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/frame_field_measures.h>
+#include <CGAL/Polyvector_fields/extract_quad_mesh.h>
+#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
+#include <CGAL/Polyvector_fields/quad_planarity.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>
 
@@ -79,6 +90,7 @@ typedef Mesh::Vertex_index Vertex;
 typedef PVF::Face_constraint<Face, Vector> Constraint;
 typedef std::complex<double> Complex;
 typedef PVF::Principal_curvatures<Vector> Curvatures;
+typedef PVF::Tangent_bundle<Mesh> Bundle;
 
 namespace {
 
@@ -101,6 +113,9 @@ const char* usage =
   "field:\n"
   "  --degree N               number of vectors per face, 1..32 (default 4)\n"
   "  --sign-symmetric         vectors come in pairs {u, -u} (N even): frame fields, N-RoSy of even N\n"
+  "  --smoothness-weights uniform|harmonic  weight of each edge in the smoothness energy: 1 (the\n"
+  "                           paper's, default) or 3|e|^2/(A_f+A_g), which follows the geometry, not\n"
+  "                           the density of the triangulation\n"
   "constraints (face ids are 0-based positions in the mesh file):\n"
   "  --constraints FILE       constraint file: 'face_id x y z [x y z ...]' per line, '#' comments\n"
   "  --dmat-b FILE --dmat-bc FILE   libigl constraints: face ids (b) and vectors (bc)\n"
@@ -118,10 +133,22 @@ const char* usage =
   "                           --paper-stopping-rule)\n"
   "  --tolerance T            with --conjugate: stop when the mean normalised deviation from conjugacy\n"
   "                           |u^T S v| / (|u| |v| max|k|) of the free faces, weighted by |k1 k2|, is at most T\n"
-  "                           (default 5e-3)\n"
+  "                           (default 5e-3); with --angle-bound: the angle in degrees that a face may\n"
+  "                           stay below the bound (default 0.5)\n"
   "  --max-lambda L           with --conjugate: cap of the weight lambda of the global step (default 1e4)\n"
   "  --paper-stopping-rule    with --conjugate: the paper's rule, sum |u^T S v| < T on the unit-size\n"
   "                           field (default T 1e-4), lambda unbounded\n"
+  "parametrization (a seamless integer-grid map guided by the frame field; implies a frame field):\n"
+  "  --parametrize            compute the map; one unit of uv is one quad of side about --edge-length\n"
+  "  --edge-length H          the quad size in mesh units, > 0 (default: the mean edge length)\n"
+  "  --out-param FILE.obj     write the map as OBJ with one texture coordinate per corner (implies\n"
+  "                           --parametrize; default with --parametrize: output/<mesh name>.param.obj)\n"
+  "quad meshes (from the map; imply --parametrize):\n"
+  "  --quad-mesh FILE         write the quad mesh of the map's integer iso-lines (.off or .obj); with\n"
+  "                           --out-vtk, also <vtk name>.quads.vtk with the planarity of each quad\n"
+  "  --planarize [T]          move the quad vertices until every quad is planar to T (default 0.01,\n"
+  "                           the paper's 1%: diagonal distance over mean diagonal length), keeping\n"
+  "                           them close to the surface\n"
   "output (default when none is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
@@ -140,6 +167,7 @@ struct Options
   std::size_t max_input_bytes = std::size_t(1024) << 20;
   std::size_t degree = 4;
   bool sign_symmetric = false;
+  PVF::Smoothness_weights weights = PVF::Smoothness_weights::UNIFORM;
   std::string constraints, dmat_b, dmat_bc;
   double soft_weight = 0;  // 0: hard
   double sharp_degrees = -1;  // < 0: no sharp-edge constraints
@@ -153,10 +181,13 @@ struct Options
   double tolerance = 0;        // 0: the stopping rule's default
   double max_lambda = 0;       // 0: the stopping rule's default
   bool paper_stopping_rule = false;
-  std::string out_field, out_singularities, out_vtk, out_mesh;
+  bool parametrize = false;
+  double edge_length = 0;  // 0: the default, the mean edge length
+  std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
+  double planarity_threshold = 0;  // 0: no planarization
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
 
-  bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate; }
+  bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate || parametrize; }
   std::size_t vectors_per_constraint() const { return sign_symmetric ? degree / 2 : degree; }
 };
 
@@ -199,6 +230,14 @@ public:
       throw Failure(m_flag + " expects a number in " + std::string(low_open ? "(" : "[") + format(low) + ", " +
                       format(high) + "], got '" + value + "'", 2);
     return x;
+  }
+
+  // A number in (low, high] if the next argument is not an option, `fallback` otherwise.
+  double optional_number(double low, double high, double fallback)
+  {
+    if(m_i + 1 >= m_argc || std::string(m_argv[m_i + 1]).rfind("--", 0) == 0)
+      return fallback;
+    return number(low, high, true);
   }
 
   std::size_t integer(unsigned long long low, unsigned long long high)
@@ -269,10 +308,31 @@ Options parse_options(int argc, char** argv)
     else if(flag == "--tolerance") o.tolerance = line.number(1e-300, 1e300);
     else if(flag == "--max-lambda") o.max_lambda = line.number(1e-300, 1e300);
     else if(flag == "--paper-stopping-rule") o.paper_stopping_rule = true;
+    else if(flag == "--smoothness-weights")
+    {
+      const std::string kind = line.text();
+      if(kind == "uniform") o.weights = PVF::Smoothness_weights::UNIFORM;
+      else if(kind == "harmonic") o.weights = PVF::Smoothness_weights::HARMONIC;
+      else throw Failure("--smoothness-weights expects 'uniform' or 'harmonic', not '" + kind + "'", 2);
+    }
     else if(flag == "--out-field") o.out_field = line.text();
     else if(flag == "--out-singularities") o.out_singularities = line.text();
     else if(flag == "--out-vtk") o.out_vtk = line.text();
     else if(flag == "--out-mesh") o.out_mesh = line.text();
+    else if(flag == "--parametrize") o.parametrize = true;
+    else if(flag == "--edge-length") o.edge_length = line.number(0, 1e300, true);
+    else if(flag == "--out-param")
+    {
+      o.out_param = line.text();
+      o.parametrize = true;
+    }
+    else if(flag == "--quad-mesh")
+    {
+      o.out_quads = line.text();
+      o.parametrize = true;
+    }
+    else if(flag == "--planarize")
+      o.planarity_threshold = line.optional_number(0, 1, 0.01);
     else
       throw Failure("unknown option '" + flag + "' (see --help)", 2);
   }
@@ -302,18 +362,36 @@ Options parse_options(int argc, char** argv)
     throw Failure("--angle-bound and --conjugate are two different optimisations: choose one", 2);
   if(o.orthogonality > 0 && !o.conjugate)
     throw Failure("--orthogonality goes with --conjugate", 2);
-  if((o.tolerance > 0 || o.max_lambda > 0 || o.paper_stopping_rule) && !o.conjugate)
-    throw Failure("--tolerance, --max-lambda and --paper-stopping-rule go with --conjugate", 2);
+  if(o.tolerance > 0 && !o.conjugate && o.angle_bound_degrees < 0)
+    throw Failure("--tolerance goes with --conjugate or --angle-bound", 2);
+  if((o.max_lambda > 0 || o.paper_stopping_rule) && !o.conjugate)
+    throw Failure("--max-lambda and --paper-stopping-rule go with --conjugate", 2);
   if(o.sign_symmetric && o.degree % 2 != 0)
     throw Failure("--sign-symmetric needs an even --degree", 2);
+  if(o.edge_length > 0 && !o.parametrize)
+    throw Failure("--edge-length goes with --parametrize", 2);
+  if(o.planarity_threshold > 0 && o.out_quads.empty())
+    throw Failure("--planarize goes with --quad-mesh", 2);
+  if(!o.out_quads.empty())
+  {
+    const std::string extension = fs::path(o.out_quads).extension().string();
+    if(extension != ".off" && extension != ".obj")
+      throw Failure("--quad-mesh '" + o.out_quads + "': the file name must end in .off or .obj", 2);
+  }
+  // The field's default outputs unless one of them is named (--out-param and
+  // --quad-mesh come in addition).
   if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty() && o.out_mesh.empty())
   {
     const std::string stem = "output/" + fs::path(o.mesh).stem().string();
     o.out_field = stem + ".rawfield";
     o.out_singularities = stem + ".sings";
     o.out_vtk = stem + ".vtk";
+    if(o.parametrize && o.out_param.empty())
+      o.out_param = stem + ".param.obj";
     o.default_outputs = true;
   }
+  if(!o.out_quads.empty() && !o.out_vtk.empty())
+    o.out_quads_vtk = (fs::path(o.out_vtk).parent_path() / fs::path(o.out_vtk).stem()).string() + ".quads.vtk";
   return o;
 }
 
@@ -339,7 +417,8 @@ public:
         claimed[canonical(*input)] = "the input '" + *input + "'";
     const std::pair<const char*, const std::string*> outputs[] = {
       { "--out-field", &o.out_field }, { "--out-singularities", &o.out_singularities },
-      { "--out-vtk", &o.out_vtk }, { "--out-mesh", &o.out_mesh } };
+      { "--out-vtk", &o.out_vtk }, { "--out-mesh", &o.out_mesh }, { "--out-param", &o.out_param },
+      { "--quad-mesh", &o.out_quads }, { "the quad-mesh VTK file of --quad-mesh and --out-vtk", &o.out_quads_vtk } };
     for(const auto& output : outputs)
     {
       const std::string& path = *output.second;
@@ -648,19 +727,20 @@ struct Curvature
   std::size_t fallback_vertices = 0;  // vertices no jet fit determined (normal-variation estimate)
 };
 
-Curvature& estimate_curvature(Mesh& tm, Curvature& curvature)
+Curvature& estimate_curvature(Mesh& tm, const Bundle& bundle, Curvature& curvature)
 {
   if(!curvature.estimated)
   {
     curvature.map = tm.add_property_map<Face, Curvatures>("f:pvf_curvatures").first;
     curvature.status = PVF::estimate_principal_curvatures(
-      tm, curvature.map, PVF::parameters::fallback_vertices(curvature.fallback_vertices));
+      bundle, curvature.map, PVF::parameters::fallback_vertices(curvature.fallback_vertices));
     curvature.estimated = true;
   }
   return curvature;
 }
 
-Constraint_set gather_constraints(const Options& o, Input_mesh& input, Curvature& curvature, Stopwatch& clock)
+Constraint_set gather_constraints(const Options& o, Input_mesh& input, const Bundle& bundle, Curvature& curvature,
+                                  Stopwatch& clock)
 {
   Constraint_set set;
   add_file_constraints(o, input, set);
@@ -674,10 +754,10 @@ Constraint_set gather_constraints(const Options& o, Input_mesh& input, Curvature
   clock.lap("constraints");
   if(o.curvature_percent > 0)
   {
-    check(estimate_curvature(input.tm, curvature).status, "curvature");
+    check(estimate_curvature(input.tm, bundle, curvature).status, "curvature");
     clock.lap("curvature");
     std::vector<Constraint> principal;
-    check(PVF::select_curvature_constraints(input.tm, curvature.map, principal,
+    check(PVF::select_curvature_constraints(bundle, curvature.map, principal,
                                             PVF::parameters::constrained_fraction(o.curvature_percent / 100)),
           "curvature constraints");
     std::set<Face> constrained = set.faces();
@@ -739,13 +819,14 @@ std::string constraint_failure(PVF::Error_code code, const Constraint& c, const 
   return m.str();
 }
 
-Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints, Curvature& curvature, Stopwatch& clock)
+Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Constraint_set& constraints,
+                   Curvature& curvature, Stopwatch& clock)
 {
   Field field;
-  PVF::Polyvector_field_designer<Mesh> designer(tm, o.degree, PVF::parameters::sign_symmetric(o.sign_symmetric));
-  check(designer.status(), "mesh '" + o.mesh + "'");
-  field.components = designer.tangent_bundle().number_of_components();
-  clock.lap("frames and connection");
+  PVF::Polyvector_field_designer<Mesh> designer(
+    bundle, o.degree, PVF::parameters::sign_symmetric(o.sign_symmetric, PVF::parameters::smoothness_weights(o.weights)));
+  check(designer.status(), "degree");
+  field.components = bundle.number_of_components();
   for(const Constraint& c : constraints.list)
   {
     const PVF::Error_code code = designer.add_constraint(c);
@@ -762,25 +843,30 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
               ": each length L needs 1e-100 <= (L / sigma)^N <= 1e100, sigma their geometric mean");
   clock.lap("design");
   field.statistics = designer.statistics();
-  field.smooth_energy = PVF::smoothness_energy(tm, o.degree, field.coefficients);
+  field.smooth_energy = PVF::smoothness_energy(bundle, o.degree, field.coefficients, PVF::parameters::smoothness_weights(o.weights));
 
   std::ostringstream report;
   if(o.angle_bound_degrees > 0)
   {
     PVF::Angle_bound_result result;
-    const auto np = PVF::parameters::angle_bound(o.angle_bound_degrees * CGAL_PI / 180);
-    check(o.iterations ? PVF::design_angle_bounded_frame_field(tm, constraints.list, field.coefficients, result,
+    const double tolerance = (o.tolerance > 0 ? o.tolerance : 0.5) * CGAL_PI / 180;  // the library's default: 0.5 degree
+    const auto np = PVF::parameters::angle_bound(
+      o.angle_bound_degrees * CGAL_PI / 180,
+      PVF::parameters::tolerance(tolerance, PVF::parameters::smoothness_weights(o.weights)));
+    check(o.iterations ? PVF::design_angle_bounded_frame_field(bundle, constraints.list, field.coefficients, result,
                                                                 np.number_of_iterations(o.iterations))
-                       : PVF::design_angle_bounded_frame_field(tm, constraints.list, field.coefficients, result, np),
+                       : PVF::design_angle_bounded_frame_field(bundle, constraints.list, field.coefficients, result, np),
           "angle bound");
-    report << "angle bound     " << o.angle_bound_degrees << " degrees: " << (result.converged ? "converged" : "NOT converged")
+    report << "angle bound     " << o.angle_bound_degrees << " degrees (to within " << tolerance * 180 / CGAL_PI
+           << "): " << (result.converged ? "converged" : "NOT converged")
            << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
-           << " degrees (free faces), " << result.minimum_angle * 180 / CGAL_PI << " degrees (all faces)\n";
+           << " degrees (free faces), " << result.minimum_angle * 180 / CGAL_PI << " degrees (all faces); "
+           << result.factorizations << " factorizations\n";
     clock.lap("frame field");
   }
   if(o.conjugate)
   {
-    check(estimate_curvature(tm, curvature).status, "curvature");
+    check(estimate_curvature(tm, bundle, curvature).status, "curvature");
     clock.lap("curvature");
     PVF::Conjugate_field_result result;
     const PVF::Conjugacy_stopping_rule rule = o.paper_stopping_rule ? PVF::Conjugacy_stopping_rule::RESIDUAL_SUM
@@ -793,15 +879,18 @@ Field design_field(const Options& o, Mesh& tm, const Constraint_set& constraints
         o.orthogonality,
         P::stopping_rule(rule, P::tolerance(o.tolerance > 0 ? o.tolerance : defaults.tolerance,
                                             P::maximum_lambda(o.max_lambda > 0 ? o.max_lambda : defaults.maximum_lambda,
-                                                              CGAL::parameters::number_of_iterations(
-                                                                o.iterations ? o.iterations : defaults.iterations))))));
-    check(PVF::design_conjugate_frame_field(tm, constraints.list, field.coefficients, result, np), "conjugate field");
+                                                              P::smoothness_weights(
+                                                                o.weights, CGAL::parameters::number_of_iterations(
+                                                                             o.iterations ? o.iterations
+                                                                                          : defaults.iterations)))))));
+    check(PVF::design_conjugate_frame_field(bundle, constraints.list, field.coefficients, result, np), "conjugate field");
     report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
            << " iterations (orthogonality weight " << o.orthogonality << ", last lambda " << result.final_lambda
            << "); mean deviation |u^T S v| / (|u| |v| max|k|) of the free faces " << result.deviation_history.front()
            << " -> " << result.mean_deviation << "; residual sum |u^T S v| (unit-size field): "
            << result.residual_history.front() << " -> free faces " << result.free_residual << ", constrained faces "
-           << result.constrained_residual << ", all faces " << result.residual << "\n";
+           << result.constrained_residual << ", all faces " << result.residual << "; " << result.factorizations
+           << " factorizations\n";
     if(curvature.fallback_vertices > 0)
       report << "note            the curvature of " << curvature.fallback_vertices
              << " vertices comes from the variation of the normals (no jet fit determined it)\n";
@@ -824,23 +913,24 @@ struct Analysis
   std::string note;
 };
 
-Analysis analyse_field(const Options& o, Mesh& tm, const Field& field, Curvature& curvature, Stopwatch& clock)
+Analysis analyse_field(const Options& o, Mesh& tm, const Bundle& bundle, const Field& field, Curvature& curvature,
+                       Stopwatch& clock)
 {
   Analysis a;
   a.roots = tm.add_property_map<Face, std::vector<Vector> >("f:pvf_roots").first;
-  check(PVF::compute_field_roots(tm, o.degree, field.coefficients, a.roots, PVF::parameters::sign_symmetric(o.sign_symmetric)),
+  check(PVF::compute_field_roots(bundle, o.degree, field.coefficients, a.roots, PVF::parameters::sign_symmetric(o.sign_symmetric)),
         "roots");
   clock.lap("roots");
-  check(PVF::compute_singularities(tm, o.degree, field.coefficients, std::back_inserter(a.singularities),
+  check(PVF::compute_singularities(bundle, o.degree, field.coefficients, std::back_inserter(a.singularities),
                                    std::back_inserter(a.undefined)),
         "singularities");
   clock.lap("singularities");
-  a.energy = PVF::smoothness_energy(tm, o.degree, field.coefficients);
+  a.energy = PVF::smoothness_energy(bundle, o.degree, field.coefficients, PVF::parameters::smoothness_weights(o.weights));
   if(o.out_vtk.empty() || !(o.sign_symmetric && o.degree == 4))
     return a;
   // Frame-field diagnostics for the VTK file; they never fail the run.
   auto angle_map = tm.add_property_map<Face, double>("f:pvf_angle").first;
-  if(PVF::compute_frame_angles(tm, field.coefficients, angle_map) == PVF::Error_code::SUCCESS)
+  if(PVF::compute_frame_angles(bundle, field.coefficients, angle_map) == PVF::Error_code::SUCCESS)
   {
     std::vector<double> angles;
     for(Face f : faces(tm))
@@ -858,7 +948,7 @@ Analysis analyse_field(const Options& o, Mesh& tm, const Field& field, Curvature
     else
     {
       auto deviation_map = tm.add_property_map<Face, double>("f:pvf_deviation").first;
-      if(PVF::compute_conjugacy_deviation(tm, field.coefficients, curvature.map, deviation_map) == PVF::Error_code::SUCCESS)
+      if(PVF::compute_conjugacy_deviation(bundle, field.coefficients, curvature.map, deviation_map) == PVF::Error_code::SUCCESS)
       {
         std::vector<double> deviation;
         for(Face f : faces(tm))
@@ -873,10 +963,77 @@ Analysis analyse_field(const Options& o, Mesh& tm, const Field& field, Curvature
 }
 
 // ---------------------------------------------------------------------------
-// Stage 7: the files.
+// Stage 7: the seamless integer-grid map guided by the frame field (--parametrize).
+// ---------------------------------------------------------------------------
+struct Parametrization
+{
+  bool computed = false;
+  Mesh::Property_map<Mesh::Halfedge_index, std::array<double, 2> > uv;  // at target(h) inside face(h)
+  PVF::Integer_grid_map_result result;
+};
+
+Parametrization parametrize(const Options& o, Mesh& tm, const Bundle& bundle, const Field& field, Stopwatch& clock)
+{
+  Parametrization p;
+  if(!o.parametrize)
+    return p;
+  p.uv = tm.add_property_map<Mesh::Halfedge_index, std::array<double, 2> >("h:pvf_uv").first;
+  const PVF::Error_code code =
+    o.edge_length > 0 ? PVF::compute_integer_grid_map(bundle, field.coefficients, p.uv, p.result,
+                                                      PVF::parameters::target_edge_length(o.edge_length))
+                      : PVF::compute_integer_grid_map(bundle, field.coefficients, p.uv, p.result);
+  check(code, "parametrization");
+  p.computed = true;
+  clock.lap("parametrization");
+  return p;
+}
+
+// ---------------------------------------------------------------------------
+// Stage 8: the quad mesh of the map's integer iso-lines, planarized on request.
+// ---------------------------------------------------------------------------
+struct Quad_stage
+{
+  bool computed = false;
+  Mesh quads;
+  PVF::Quad_extraction_result extraction;
+  PVF::Planarity_statistics before, after;
+  bool planarized = false;
+  PVF::Planarization_result planarization;
+  double time_extraction = 0, time_planarization = 0;
+};
+
+void make_quad_mesh(const Options& o, const Mesh& tm, const Parametrization& param, Quad_stage& q, Stopwatch& clock)
+{
+  if(o.out_quads.empty())
+    return;
+  const auto start = std::chrono::steady_clock::now();
+  check(PVF::extract_quad_mesh(tm, param.uv, q.quads, q.extraction), "quad mesh");
+  q.time_extraction = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  auto planarity = q.quads.add_property_map<Mesh::Face_index, double>("f:pvf_planarity").first;
+  check(PVF::quad_planarity(q.quads, planarity, q.before), "planarity");
+  q.after = q.before;
+  clock.lap("quad mesh");
+  if(o.planarity_threshold > 0)
+  {
+    const auto planarize_start = std::chrono::steady_clock::now();
+    const PVF::Error_code code = PVF::planarize_quad_mesh(q.quads, tm, q.planarization,
+                                                          PVF::parameters::planarity_threshold(o.planarity_threshold));
+    // Not reaching the threshold within the iterations is reported, not fatal.
+    if(code != PVF::Error_code::DID_NOT_CONVERGE)
+      check(code, "planarization");
+    q.planarized = true;
+    check(PVF::quad_planarity(q.quads, planarity, q.after), "planarity");
+    q.time_planarization = std::chrono::duration<double>(std::chrono::steady_clock::now() - planarize_start).count();
+    clock.lap("planarization");
+  }
+  q.computed = true;
+}
+
+// ---------------------------------------------------------------------------
+// Stage 9: the files.
 // ---------------------------------------------------------------------------
 void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& constraints, const Analysis& a,
-                   Output_files& outputs, Stopwatch& clock)
+                   const Parametrization& param, const Quad_stage& q, Output_files& outputs, Stopwatch& clock)
 {
   auto to_string = [](auto&& write, const std::string& what) {
     std::ostringstream s;
@@ -907,15 +1064,31 @@ void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& const
       throw Failure("writing " + o.out_mesh + ": cannot write the mesh");
     outputs.set(o.out_mesh, s.str());
   }
+  if(!o.out_param.empty())
+    outputs.set(o.out_param, to_string([&](std::ostream& s) { return PVF::IO::write_integer_grid_map_OBJ(s, tm, param.uv); },
+                                       o.out_param));
+  if(!o.out_quads.empty())
+  {
+    std::ostringstream s;
+    const bool obj = fs::path(o.out_quads).extension() == ".obj";
+    if(!(obj ? CGAL::IO::write_OBJ(s, q.quads, CGAL::parameters::stream_precision(17))
+             : CGAL::IO::write_OFF(s, q.quads, CGAL::parameters::stream_precision(17))))
+      throw Failure("writing " + o.out_quads + ": cannot write the quad mesh");
+    outputs.set(o.out_quads, s.str());
+  }
+  if(!o.out_quads_vtk.empty())
+    outputs.set(o.out_quads_vtk, to_string([&](std::ostream& s) { return PVF::IO::write_quad_mesh_VTK(s, q.quads); },
+                                           o.out_quads_vtk));
   outputs.publish(o.default_outputs);
   clock.lap("write");
 }
 
 // ---------------------------------------------------------------------------
-// Stage 8: the summary.
+// Stage 10: the summary.
 // ---------------------------------------------------------------------------
 void print_summary(const Options& o, const Input_mesh& input, const Constraint_set& constraints, const Field& field,
-                   const Analysis& a, const Output_files& outputs, const Stopwatch& clock)
+                   const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
+                   const Stopwatch& clock)
 {
   const Mesh& tm = input.tm;
   const PVF::IO::Mesh_repair_report& r = input.report;
@@ -967,7 +1140,8 @@ void print_summary(const Options& o, const Input_mesh& input, const Constraint_s
     std::cout << "hard\n";
   if(!constraints.note.empty())
     std::cout << "note            " << constraints.note << "\n";
-  std::cout << "energy          " << a.energy << " (smoothness, Eq. 6)";
+  std::cout << "energy          " << a.energy << " (smoothness, Eq. 6"
+            << (o.weights == PVF::Smoothness_weights::HARMONIC ? ", harmonic weights)" : ")");
   if(o.angle_bound_degrees > 0 || o.conjugate)
     std::cout << "; smooth field before optimisation " << field.smooth_energy;
   std::cout << "\n" << field.frame_report;
@@ -980,9 +1154,55 @@ void print_summary(const Options& o, const Input_mesh& input, const Constraint_s
     std::cout << "undefined index " << a.undefined.size() << " vertices next to faces with a zero constant coefficient\n";
   if(!a.note.empty())
     std::cout << "note            " << a.note << "\n";
+  if(param.computed)
+  {
+    const PVF::Integer_grid_map_result& r = param.result;
+    std::cout << "parametrization edge length " << r.target_edge_length << " (mean edge " << r.mean_edge_length << "); "
+              << r.singular_vertices << " singular vertices on integer points, " << r.seam_curves << " seam curves ("
+              << r.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
+              << " flipped faces";
+    if(r.stiffening_rounds > 0)
+      std::cout << " after " << r.stiffening_rounds << " stiffening rounds";
+    std::cout << "; worst seam residual " << r.max_seam_residual << "; energy rounded/continuous " << r.energy_ratio;
+    if(r.clamped_faces > 0)
+      std::cout << "; " << r.clamped_faces << " near-degenerate frames clamped";
+    const auto old_flags = std::cout.flags();
+    const auto old_precision = std::cout.precision();
+    std::cout << std::fixed << std::setprecision(3) << "\n                (time: comb and cut " << r.time_comb
+              << ", seam reduction " << r.time_reduction << ", assembly " << r.time_assembly << ", factorization "
+              << r.time_factorization << ", integer rounding " << r.time_schur + r.time_rounding << ", stiffening "
+              << r.time_stiffening << ")\n";
+    std::cout.flags(old_flags);
+    std::cout.precision(old_precision);
+  }
+  if(q.computed)
+  {
+    const PVF::Quad_extraction_result& e = q.extraction;
+    std::cout << "quad mesh       " << e.quads << " quads";
+    if(e.trimmed_polygons > 0)
+      std::cout << " and " << e.trimmed_polygons << " trimmed boundary polygons";
+    std::cout << ", " << e.vertices << " vertices, " << e.irregular_vertices << " irregular vertices (valence != 4)";
+    if(e.flipped_faces > 0)
+      std::cout << "; " << e.flipped_faces << " flipped faces of the map, " << e.repaired_regions << " regions repaired";
+    std::cout << "\nplanarity       max " << 100 * q.before.max << "%, mean " << 100 * q.before.mean << "%";
+    if(q.planarized)
+    {
+      const PVF::Planarization_result& r = q.planarization;
+      if(r.converged)
+        std::cout << " -> after " << r.iterations << " iterations max " << 100 * q.after.max << "%, mean "
+                  << 100 * q.after.mean << "% (threshold " << 100 * r.threshold << "%); largest distance to the surface "
+                  << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";
+      else
+        std::cout << "; the planarization did NOT reach " << 100 * r.threshold << "% in " << r.iterations
+                  << " iterations (it got to max " << 100 * r.max_planarity_after << "%, mean "
+                  << 100 * r.mean_planarity_after << "%): the quad mesh is written as extracted";
+    }
+    std::cout << "\n";
+  }
   std::cout << "time (s)       ";
-  for(const char* stage : { "load mesh", "constraints", "curvature", "frames and connection", "design", "frame field",
-                            "roots", "singularities", "diagnostics", "write" })
+  for(const char* stage : { "load mesh", "frames and connection", "constraints", "curvature", "design", "frame field",
+                            "roots", "singularities", "diagnostics", "parametrization", "quad mesh", "planarization",
+                            "write" })
     if(clock.times.count(stage))
       std::cout << " " << stage << " " << std::fixed << std::setprecision(3) << clock.times.at(stage) << ";";
   std::cout << " (design: assembly " << field.statistics.assembly << ", factorization " << field.statistics.factorization
@@ -997,12 +1217,19 @@ int run(const Options& o)
   Output_files outputs(o);
   Input_mesh input = load_mesh(o);
   clock.lap("load mesh");
+  // The frames, numbering and connection of the mesh, built once for every stage.
+  const Bundle bundle(input.tm);
+  check(bundle.status(), "mesh '" + o.mesh + "'");
+  clock.lap("frames and connection");
   Curvature curvature;
-  const Constraint_set constraints = gather_constraints(o, input, curvature, clock);
-  const Field field = design_field(o, input.tm, constraints, curvature, clock);
-  const Analysis analysis = analyse_field(o, input.tm, field, curvature, clock);
-  write_outputs(o, input.tm, constraints, analysis, outputs, clock);
-  print_summary(o, input, constraints, field, analysis, outputs, clock);
+  const Constraint_set constraints = gather_constraints(o, input, bundle, curvature, clock);
+  const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
+  const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
+  const Parametrization param = parametrize(o, input.tm, bundle, field, clock);
+  Quad_stage quads;
+  make_quad_mesh(o, input.tm, param, quads, clock);
+  write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
+  print_summary(o, input, constraints, field, analysis, param, quads, outputs, clock);
   return EXIT_SUCCESS;
 }
 

@@ -99,6 +99,20 @@ elseif(CASE STREQUAL "success_bumpy")
   file(WRITE "${constraints}" "# face x y z ...\n0 1 0 0 0 1 0\n1261 0 1 0\n")
   set(args --mesh "${bumpy}" --degree 4 --sign-symmetric --constraints "${constraints}")
   set(expect_success TRUE)
+elseif(CASE STREQUAL "parametrize_bumpy")
+  # A frame field from 1% curvature constraints and the integer-grid map it
+  # guides, written as OBJ with one texture coordinate per corner.
+  set(args --mesh "${bumpy}" --curvature-constraints 1 --parametrize --out-param "${WORK_DIR}/map.obj")
+  list(APPEND outputs "${WORK_DIR}/map.obj")
+  set(expect_success TRUE)
+  set(expect_stdout " 0 flipped faces")
+elseif(CASE STREQUAL "planar_quads_inspired")
+  # The paper's pipeline on its architectural input: conjugate field, map at
+  # the paper's quad size, quad mesh, planarized to 1%.
+  set(args --conjugate --edge-length 0.82 --quad-mesh "${WORK_DIR}/quads.off" --planarize)
+  list(APPEND outputs "${WORK_DIR}/quads.off" "${WORK_DIR}/out.quads.vtk")
+  set(expect_success TRUE)
+  set(expect_stdout "-> after ")
 elseif(CASE STREQUAL "default_run")
   # The README's main command: no arguments, the bundled run, writing into
   # output/ of the working directory.

@@ -512,14 +512,14 @@ TEST(Designer, PartialConstraintChangesItsVectorCount)
 TEST(Errors, Messages)
 {
   std::set<std::string> messages;
-  for(int code = 0; code <= int(PVF::Error_code::VALUE_OUT_OF_RANGE); ++code)
+  for(int code = 0; code <= int(PVF::Error_code::DID_NOT_CONVERGE); ++code)
   {
     const std::string message = PVF::get_error_message(PVF::Error_code(code));
     EXPECT_FALSE(message.empty());
     EXPECT_NE(message, "unknown error");
     messages.insert(message);
   }
-  EXPECT_EQ(messages.size(), std::size_t(int(PVF::Error_code::VALUE_OUT_OF_RANGE) + 1));
+  EXPECT_EQ(messages.size(), std::size_t(int(PVF::Error_code::DID_NOT_CONVERGE) + 1));
   EXPECT_EQ(std::string(PVF::get_error_message(PVF::Error_code(1000))), "unknown error");
 }
 

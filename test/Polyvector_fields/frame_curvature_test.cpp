@@ -23,6 +23,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 
@@ -845,6 +846,15 @@ TEST(CurvatureConstraints, ThresholdAndFullFraction)
   EXPECT_EQ(PVF::select_curvature_constraints(tm, map, defaults), PVF::Error_code::SUCCESS);
   EXPECT_GT(defaults.size(), 0u);
   EXPECT_LE(defaults.size(), std::size_t(0.01 * num_faces(tm)));
+
+  // The overload for a tangent bundle (it once failed to compile: overload
+  // resolution formed boost::graph_traits of the bundle) chooses the same faces.
+  const PVF::Tangent_bundle<Mesh> bundle(tm);
+  std::vector<Constraint> from_bundle;
+  EXPECT_EQ(PVF::select_curvature_constraints(bundle, map, from_bundle), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(from_bundle.size(), defaults.size());
+  for(std::size_t i = 0; i < defaults.size(); ++i)
+    EXPECT_EQ(from_bundle[i].face, defaults[i].face);
 }
 
 TEST(CurvatureConstraints, InvalidInput)

@@ -43,7 +43,12 @@ enum class Error_code
   UNSUPPORTED_FORMAT,            ///< a file's format (its extension or header) is not one that the reader knows
   DUPLICATE_FACE,                ///< two faces of a mesh file have the same vertices
   NON_MANIFOLD_MESH,             ///< a mesh has an edge shared by more than two faces, a vertex whose faces do not form a fan, or faces that cannot be oriented consistently
-  VALUE_OUT_OF_RANGE             ///< a value is finite but too large or too small for the computation: a constraint vector of length `L` needs `1e-300 <= L^N <= 1e300`, and `1e-100 <= (L / sigma)^N <= 1e100` for the mean length `sigma` of all constraint vectors
+  VALUE_OUT_OF_RANGE,            ///< a value is finite but too large or too small for the computation: a constraint vector of length `L` needs `1e-300 <= L^N <= 1e300`, and `1e-100 <= (L / sigma)^N <= 1e100` for the mean length `sigma` of all constraint vectors
+  ZERO_FRAME,                    ///< a face of a frame field has a zero frame (both of its vectors are zero), which cannot be clamped to a usable frame
+  NOT_AN_INTEGER_GRID_MAP,       ///< a uv map is missing or not seamless: a transition that is not a grid symmetry, or a vertex of non-zero index off the integer grid
+  UNREPAIRABLE_FOLD_OVER,        ///< a uv map has flipped or degenerate triangles that the local repair could not remove
+  NON_QUAD_FACE,                 ///< a face of a polygon mesh is not a quadrilateral
+  DID_NOT_CONVERGE               ///< an iterative method stopped at its iteration limit before reaching its target
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -77,6 +82,11 @@ inline const char* get_error_message(Error_code code)
     case Error_code::DUPLICATE_FACE: return "the mesh has two faces with the same vertices";
     case Error_code::NON_MANIFOLD_MESH: return "the mesh is not a manifold surface (an edge with more than two faces, a pinched vertex, or inconsistent orientations)";
     case Error_code::VALUE_OUT_OF_RANGE: return "a constraint vector is too long or too short for the degree N (its length L needs 1e-300 <= L^N <= 1e300, and within 1e-100 <= (L / sigma)^N <= 1e100 of the mean length sigma of all constraint vectors)";
+    case Error_code::ZERO_FRAME: return "a face of the frame field has a zero frame (both vectors zero), which cannot be clamped";
+    case Error_code::NOT_AN_INTEGER_GRID_MAP: return "the uv map is missing or is not a seamless integer-grid map";
+    case Error_code::UNREPAIRABLE_FOLD_OVER: return "the uv map has fold-overs that could not be repaired";
+    case Error_code::NON_QUAD_FACE: return "the mesh has a face that is not a quadrilateral";
+    case Error_code::DID_NOT_CONVERGE: return "the iteration limit was reached before the target";
   }
   return "unknown error";
 }

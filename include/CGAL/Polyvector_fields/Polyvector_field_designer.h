@@ -13,6 +13,7 @@
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
+#include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/constraint_specification.h>
@@ -115,6 +116,7 @@ public:
   /// \cgalNamedParamsBegin
   ///   \pvfParamVertexPointMap
   ///   \pvfParamSignSymmetric
+  ///   \pvfParamSmoothnessWeights
   ///   \cgalParamNBegin{sparse_linear_solver}
   ///     \cgalParamDescription{a prototype of the solver; each factorization uses its own copy}
   ///     \cgalParamType{`Solver_traits`}
@@ -254,6 +256,7 @@ private:
     : m_N(N),
       m_sign_symmetric(CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, internal_np::sign_symmetric), false)),
+      m_weight_kind(internal::read_smoothness_weights(np)),
       m_solver_prototype(CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver_traits()))
   {}
@@ -264,6 +267,8 @@ private:
       m_status = Error_code::INVALID_DEGREE;
     else
       m_status = m_bundle->status();
+    if(m_status == Error_code::SUCCESS)
+      m_edge_weights = internal::smoothness_edge_weights(*m_bundle, m_weight_kind);
   }
 
   Error_code compute()
@@ -289,7 +294,7 @@ private:
     }
     else
     {
-      m_system.reset(new System(*m_bundle, m_N, degrees, m_solver_prototype, parallel));
+      m_system.reset(new System(*m_bundle, m_N, degrees, m_solver_prototype, parallel, m_edge_weights));
       m_system->specifications() = m_specifications;
       m_system->set_length_exponent(k);
       if(!m_system->factor())
@@ -313,6 +318,8 @@ private:
 
   std::size_t m_N;
   bool m_sign_symmetric;
+  Smoothness_weights m_weight_kind;
+  std::vector<double> m_edge_weights;  // per interior edge; empty: uniform
   Solver_traits m_solver_prototype;
   std::unique_ptr<const Bundle> m_own_bundle;
   const Bundle* m_bundle = nullptr;

@@ -24,6 +24,7 @@
 #include <complex>
 #include <cstddef>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -281,6 +282,13 @@ Tangent_bundle_of<TriangleMesh, NamedParameters> make_tangent_bundle(const Trian
     tm, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                            CGAL::get_const_property_map(CGAL::vertex_point, tm)));
 }
+
+// Whether a type is a `Tangent_bundle` (for the functions that have one
+// overload for meshes and one for bundles).
+template <typename T>
+struct Is_tangent_bundle : std::false_type {};
+template <typename TriangleMesh, typename VertexPointMap>
+struct Is_tangent_bundle<Tangent_bundle<TriangleMesh, VertexPointMap> > : std::true_type {};
 
 // The tangent bundle of a mesh (built) or of a bundle (itself): for the
 // functions that accept both.

@@ -36,6 +36,7 @@ struct Angle_bound_result
   bool converged = false;      ///< every face that is not fixed by a hard full constraint is within the bound
   double minimum_angle = 0;    ///< smallest frame angle over all faces of the result, in radians
   double minimum_free_angle = 0;  ///< smallest frame angle over the faces not fixed by a hard full constraint
+  std::size_t factorizations = 0;  ///< numerical factorizations of the global steps (one per new `lambda`; none at the cap)
 };
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
@@ -72,9 +73,12 @@ struct Angle_bound_result
 ///     \cgalParamDefault{70 degrees}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{tolerance}
-///     \cgalParamDescription{how far below the bound, in radians, a face may stay at convergence, `>= 0`}
+///     \cgalParamDescription{how far below the bound, in radians, a face may stay at convergence, `>= 0`.
+///                           The last fraction of a degree costs most of the iterations (on the Stanford bunny with
+///                           20 random constraints and a 70-degree bound: 3 iterations to within 0.5 degree, 9 to
+///                           within 0.06 degree, 32 to within 1e-7 radian)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{1e-7}
+///     \cgalParamDefault{0.5 degree}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_lambda}
 ///     \cgalParamDescription{the largest weight `lambda` of the global step, `>= initial_lambda`; at the cap the
@@ -100,7 +104,7 @@ Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle
   using CGAL::parameters::get_parameter;
 
   const double theta_min = choose_parameter(get_parameter(np, internal_np::angle_bound), 70.0 * CGAL_PI / 180.0);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 1e-7);
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 0.5 * CGAL_PI / 180.0);
   internal::Local_global_parameters p;
   Error_code code = internal::read_local_global_parameters(np, 200, std::numeric_limits<double>::infinity(), p);
   if(code != Error_code::SUCCESS)

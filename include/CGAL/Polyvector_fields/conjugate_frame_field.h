@@ -90,6 +90,7 @@ struct Conjugate_field_result
   double constrained_residual = 0;     ///< over the faces fixed by a hard full constraint
   double scale = 1;                    ///< the factor applied to the vectors when measuring residuals
   double final_lambda = 0;             ///< the weight `lambda` of the last global step
+  std::size_t factorizations = 0;      ///< numerical factorizations of the global steps (one per new `lambda`; none at the cap)
 };
 
 namespace internal {

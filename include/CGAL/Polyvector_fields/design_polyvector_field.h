@@ -40,6 +40,7 @@ namespace Polyvector_fields {
 ///   \pvfParamVertexPointMap
 ///   \pvfParamGeomTraits
 ///   \pvfParamSignSymmetric
+///   \pvfParamSmoothnessWeights
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`}
 ///     \cgalParamDefault{`Default_sparse_solver`}

@@ -123,6 +123,7 @@ bool curvature_vector_finite(const Vector& v)
 /// \tparam CurvatureMap a model of `ReadablePropertyMap` with
 ///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
 ///         `Principal_curvatures<Vector_3>` as value type
+/// \tparam FaceDescriptor `boost::graph_traits<TriangleMesh>::%face_descriptor` (deduced)
 /// \tparam Vector_3 the vector type of the constraints; constructible from three
 ///         `double` values when it differs from the vector type of the map
 /// \tparam NamedParameters a sequence of named parameters
@@ -160,14 +161,24 @@ bool curvature_vector_finite(const Vector& v)
 /// \sa `estimate_principal_curvatures()`, `Face_constraint`
 template <typename TriangleMesh,
           typename CurvatureMap,
+          typename FaceDescriptor,
           typename Vector_3,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+          typename NamedParameters = CGAL::parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          , typename = std::enable_if_t<!internal::Is_tangent_bundle<TriangleMesh>::value>
+#endif
+          >
 Error_code select_curvature_constraints(
   const TriangleMesh& tm,
   CurvatureMap curvature_map,
-  std::vector<Face_constraint<typename boost::graph_traits<TriangleMesh>::face_descriptor, Vector_3> >& out,
+  std::vector<Face_constraint<FaceDescriptor, Vector_3> >& out,
   const NamedParameters& np = CGAL::parameters::default_values())
 {
+  // (The face type is deduced, not written as graph_traits<TriangleMesh>, so
+  // that overload resolution for a Tangent_bundle never instantiates
+  // boost::graph_traits on it, which is a hard error.)
+  static_assert(std::is_same<FaceDescriptor, typename boost::graph_traits<TriangleMesh>::face_descriptor>::value,
+                "the constraints must be on the faces of the mesh");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using boost::get;

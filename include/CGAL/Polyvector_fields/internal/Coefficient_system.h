@@ -91,18 +91,7 @@ public:
   bool refactor()
   {
     typename Block_factorizations<SolverTraits>::Solver_scope scope;
-    if(m_factorizations.empty() || m_matrices.size() != m_layout.number_of_blocks())
-      return assemble_and_factor();
-    Timer timer;
-    std::vector<char> complete(m_matrices.size(), 1);
-    for_each_block(m_matrices.size(), m_factorizations.parallel(), [&](std::size_t b) {
-      Pattern_sink sink(m_matrices[b]);
-      m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, sink);
-      complete[b] = sink.complete();
-      return true;
-    });
-    m_times.assembly = timer.elapsed();
-    if(std::find(complete.begin(), complete.end(), 0) != complete.end())
+    if(!refill())
       return assemble_and_factor();
     Timer factor_timer;
     const bool factored = m_factorizations.refactor(m_matrices);
@@ -159,6 +148,28 @@ public:
   }
 
 private:
+  // Refills the matrices in their pattern with the current terms; false if a
+  // term falls outside it (then the matrices must be assembled anew). Only
+  // the data term is enumerated: the others are copied from the values kept
+  // by assemble_and_factor().
+  bool refill()
+  {
+    if(m_factorizations.empty() || m_matrices.size() != m_layout.number_of_blocks() ||
+       m_fixed_values.size() != m_matrices.size())
+      return false;
+    Timer timer;
+    std::vector<char> complete(m_matrices.size(), 1);
+    for_each_block(m_matrices.size(), m_factorizations.parallel(), [&](std::size_t b) {
+      m_matrices[b].coeffs() = m_fixed_values[b];
+      Pattern_sink sink(m_matrices[b], true);
+      m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, sink, Quadratic_energy::DATA_TERM);
+      complete[b] = sink.complete();
+      return true;
+    });
+    m_times.assembly = timer.elapsed();
+    return std::find(complete.begin(), complete.end(), 0) == complete.end();
+  }
+
   static Complex scaled(const Complex& c, int e) { return Complex(std::ldexp(c.real(), e), std::ldexp(c.imag(), e)); }
 
   void take_length_unit()
@@ -176,10 +187,16 @@ private:
     Timer timer;
     const std::size_t blocks = m_layout.number_of_blocks();
     m_matrices.assign(blocks, Sparse_matrix());
+    m_fixed_values.assign(blocks, Dense_vector());
     for_each_block(blocks, m_factorizations.parallel(), [&](std::size_t b) {
       Triplet_sink sink(4 * m_bundle.interior_edges().size() + m_layout.size());
       m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, sink);
       m_matrices[b] = sink.matrix(m_layout.size());
+      // The values of the terms that refill() does not enumerate again.
+      Sparse_matrix fixed = m_matrices[b];
+      Pattern_sink fixed_sink(fixed);
+      m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, fixed_sink, Quadratic_energy::ALL_BUT_DATA_TERM);
+      m_fixed_values[b] = fixed.coeffs();
       return true;
     });
     m_times.assembly = timer.elapsed();
@@ -199,6 +216,7 @@ private:
   Data_term m_data;
   Unknown_layout m_layout;
   std::vector<Sparse_matrix> m_matrices;
+  std::vector<Dense_vector> m_fixed_values;  // per block: the values of the matrix without the data term
   Stage_times m_times;
 };
 

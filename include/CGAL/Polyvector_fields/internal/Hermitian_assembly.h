@@ -59,8 +59,13 @@ private:
 class Pattern_sink
 {
 public:
-  // `A` is compressed; its values are set to zero here.
-  explicit Pattern_sink(Sparse_matrix& A) : m_A(A) { m_A.coeffs().setZero(); }
+  // `A` is compressed; the terms are added to its values, which are set to
+  // zero first unless `keep_values`.
+  explicit Pattern_sink(Sparse_matrix& A, bool keep_values = false) : m_A(A)
+  {
+    if(!keep_values)
+      m_A.coeffs().setZero();
+  }
 
   template <typename Term>
   void add(const Term& t)

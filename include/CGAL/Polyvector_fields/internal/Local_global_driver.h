@@ -25,6 +25,7 @@
 
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
@@ -32,6 +33,11 @@
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/blocked_range.h>
+#  include <tbb/parallel_for.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -77,8 +83,9 @@ template <typename Bundle, typename SolverTraits>
 class Local_global_driver
 {
 public:
-  Local_global_driver(const Bundle& bundle, const SolverTraits& solver, bool parallel)
-    : m_bundle(bundle), m_system(bundle, 4, { 0, 2 }, solver, parallel)
+  Local_global_driver(const Bundle& bundle, const SolverTraits& solver, bool parallel,
+                      std::vector<double> edge_weights = std::vector<double>())
+    : m_bundle(bundle), m_system(bundle, 4, { 0, 2 }, solver, parallel, std::move(edge_weights)), m_parallel(parallel)
   {}
 
   // The smoothest frame field of `constraints` (each vector u stands for
@@ -133,24 +140,28 @@ public:
     std::vector<Complex> targets(4 * F);
     double lambda = p.initial_lambda, factored_lambda = 0;
     iterations = 0;
-    bool first_step = true;
     while(!converged(c, iterations, factored_lambda) && iterations < p.maximum_iterations)
     {
-      for(std::size_t f = 0; f < F; ++f)
-      {
-        const auto uv = frame_vectors(&c[4 * f]);
-        const auto moved = is_fixed(f) ? uv : local_step(f, uv.first, uv.second);
-        frame_coefficients(moved.first, moved.second, &targets[4 * f]);
-      }
+      // Faces are independent: in parallel when allowed (the same result).
+      for_each_face_range(F, [&](std::size_t begin, std::size_t end) {
+        for(std::size_t f = begin; f < end; ++f)
+        {
+          const auto uv = frame_vectors(&c[4 * f]);
+          const auto moved = is_fixed(f) ? uv : local_step(f, uv.first, uv.second);
+          frame_coefficients(moved.first, moved.second, &targets[4 * f]);
+        }
+      });
       set_data_term(lambda, scale, orthogonality, targets);
       // At the cap the matrix does not change: only the targets, hence only
       // the right-hand side, are new, and the factorization is reused.
-      bool factored = true;
-      if(first_step || lambda != factored_lambda)
-        factored = first_step ? m_system.factor() : m_system.refactor();
-      factored_lambda = lambda;
-      first_step = false;
-      if(!factored || !m_system.solve(c))
+      if(iterations == 0 || lambda != factored_lambda)
+      {
+        if(!(iterations == 0 ? m_system.factor() : m_system.refactor()))
+          return Error_code::SOLVER_FAILURE;
+        ++m_factorizations;
+        factored_lambda = lambda;
+      }
+      if(!m_system.solve(c))
         return Error_code::SOLVER_FAILURE;
       ++iterations;
       lambda = (std::min)(lambda * p.lambda_factor, p.maximum_lambda);
@@ -173,6 +184,7 @@ public:
       code = iterate(scale, orthogonality, p, local_step, converged, c, report.iterations);
     if(code != Error_code::SUCCESS)
       return code;
+    report.factorizations = m_factorizations;
     write_coefficients(m_bundle, 4, c, coefficient_map);
     result = report;
     return Error_code::SUCCESS;
@@ -181,6 +193,21 @@ public:
   const Stage_times& times() const { return m_system.times(); }
 
 private:
+  // Runs task(begin, end) on ranges that cover 0 .. n-1.
+  template <typename Task>
+  void for_each_face_range(std::size_t n, const Task& task) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m_parallel)
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                        [&](const tbb::blocked_range<std::size_t>& r) { task(r.begin(), r.end()); });
+      return;
+    }
+#endif
+    task(std::size_t(0), n);
+  }
+
   // data |c - chat|^2 + orthogonality |c_2|^2 = w |c - data chat / w|^2 + constant,
   // with data = lambda s_f and w = data (+ orthogonality for c_2).
   void set_data_term(double lambda, const std::vector<double>& scale, double orthogonality,
@@ -202,11 +229,14 @@ private:
   const Bundle& m_bundle;
   Coefficient_system<Bundle, SolverTraits> m_system;
   std::vector<char> m_fixed;
+  bool m_parallel;
+  std::size_t m_factorizations = 0;  // of the global steps
 };
 
 // The driver of an algorithm called with `np`: the solver of the named
 // parameter `sparse_linear_solver` (default `Default_sparse_solver`), in
-// parallel when `ConcurrencyTag` is `Parallel_tag`.
+// parallel when `ConcurrencyTag` is `Parallel_tag`, with the edge weights of
+// the named parameter `smoothness_weights`.
 template <typename ConcurrencyTag, typename Bundle, typename NamedParameters>
 auto make_local_global_driver(const Bundle& bundle, const NamedParameters& np)
 {
@@ -215,7 +245,8 @@ auto make_local_global_driver(const Bundle& bundle, const NamedParameters& np)
   return Local_global_driver<Bundle, Solver>(
     bundle, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                                Solver()),
-    std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
+    std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+    smoothness_edge_weights(bundle, read_smoothness_weights(np)));
 }
 
 } // namespace internal

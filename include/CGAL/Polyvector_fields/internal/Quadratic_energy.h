@@ -91,13 +91,72 @@ public:
 
   const std::vector<int>& degrees() const { return m_degrees; }
 
-  // Hands every term of `block` to sink.add(term) (see Term).
+  // Which terms enumerate_terms() hands on: all of them, or the data term
+  // alone (the only one that the global steps of the frame-field iterations
+  // change), or all but the data term.
+  enum Terms { ALL_TERMS, DATA_TERM, ALL_BUT_DATA_TERM };
+
+  // Hands every term of `block` (among `which`) to sink.add(term) (see Term).
   template <typename Sink>
   void enumerate_terms(const Unknown_layout& layout, const Specifications& specifications, const Data_term& data,
-                       std::size_t block, Sink& sink) const
+                       std::size_t block, Sink& sink, Terms which = ALL_TERMS) const
   {
     const std::size_t slots = m_degrees.size();
     Term term;
+    if(which != DATA_TERM)
+      enumerate_fixed_terms(layout, specifications, block, sink, term);
+    if(which == ALL_BUT_DATA_TERM)
+      return;
+    // Data term.
+    for(std::size_t q = 0; q < slots && q < data.weight.size(); ++q)
+    {
+      if(!layout.in_block(q, block))
+        continue;
+      for(std::size_t f = 0; f < data.weight[q].size(); ++f)
+      {
+        const double w = data.weight[q][f];
+        if(!(w > 0) || layout.kind(f) == Unknown_layout::FIXED)
+          continue;
+        const double root_weight = std::sqrt(w);
+        term.clear(-root_weight * (data.target[q].empty() ? Complex(0) : data.target[q][f]));
+        term.append(layout.coefficient(f, q, m_degrees[q]), root_weight);
+        sink.add(term);
+      }
+    }
+  }
+
+  // One term |sum_j alphas[j] x[variables[j]] + gamma|^2.
+  struct Term
+  {
+    std::vector<std::size_t> variables;
+    std::vector<Complex> alphas;
+    Complex gamma = 0;
+
+    void clear(const Complex& constant = Complex(0))
+    {
+      variables.clear();
+      alphas.clear();
+      gamma = constant;
+    }
+    // Adds scale * c, c an affine function of the unknowns.
+    void append(const Unknown_layout::Affine& c, const Complex& scale)
+    {
+      gamma += scale * c.constant;
+      for(int j = 0; j < c.size; ++j)
+      {
+        variables.push_back(c.first + std::size_t(j));
+        alphas.push_back(scale * c.coefficient[j]);
+      }
+    }
+  };
+
+private:
+  // The smoothness, soft-constraint and regularisation terms.
+  template <typename Sink>
+  void enumerate_fixed_terms(const Unknown_layout& layout, const Specifications& specifications, std::size_t block,
+                             Sink& sink, Term& term) const
+  {
+    const std::size_t slots = m_degrees.size();
     // Smoothness.
     for(std::size_t e = 0; e < m_edges.size(); ++e)
     {
@@ -142,22 +201,6 @@ public:
         sink.add(term);
       }
     }
-    // Data term.
-    for(std::size_t q = 0; q < slots && q < data.weight.size(); ++q)
-    {
-      if(!layout.in_block(q, block))
-        continue;
-      for(std::size_t f = 0; f < data.weight[q].size(); ++f)
-      {
-        const double w = data.weight[q][f];
-        if(!(w > 0) || layout.kind(f) == Unknown_layout::FIXED)
-          continue;
-        const double root_weight = std::sqrt(w);
-        term.clear(-root_weight * (data.target[q].empty() ? Complex(0) : data.target[q][f]));
-        term.append(layout.coefficient(f, q, m_degrees[q]), root_weight);
-        sink.add(term);
-      }
-    }
     // Regularisation of components fixed only by partial constraints.
     const double root_epsilon = std::sqrt(regularisation);
     for(std::size_t f = 0; f < layout.number_of_faces(); ++f)
@@ -174,32 +217,6 @@ public:
     }
   }
 
-  // One term |sum_j alphas[j] x[variables[j]] + gamma|^2.
-  struct Term
-  {
-    std::vector<std::size_t> variables;
-    std::vector<Complex> alphas;
-    Complex gamma = 0;
-
-    void clear(const Complex& constant = Complex(0))
-    {
-      variables.clear();
-      alphas.clear();
-      gamma = constant;
-    }
-    // Adds scale * c, c an affine function of the unknowns.
-    void append(const Unknown_layout::Affine& c, const Complex& scale)
-    {
-      gamma += scale * c.constant;
-      for(int j = 0; j < c.size; ++j)
-      {
-        variables.push_back(c.first + std::size_t(j));
-        alphas.push_back(scale * c.coefficient[j]);
-      }
-    }
-  };
-
-private:
   std::vector<int> m_degrees;
   std::vector<std::pair<std::size_t, std::size_t> > m_edges;                    // (f, g) per interior edge
   std::vector<std::vector<std::pair<Complex, Complex> > > m_transport;          // per slot, per edge: conj(e_f)^(N-m), conj(e_g)^(N-m)

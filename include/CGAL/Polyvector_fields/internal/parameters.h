@@ -52,6 +52,9 @@
 // Field design (paper Section 3).
 /// `bool`: the field is made of pairs {u, -u} (only even-degree coefficients); default `false`.
 CGAL_PVF_ADD_NAMED_PARAMETER(sign_symmetric_t, sign_symmetric, sign_symmetric)
+/// `Smoothness_weights`: the weight of each interior edge in the smoothness
+/// energy; default `Smoothness_weights::UNIFORM` (the paper's Eq. 6).
+CGAL_PVF_ADD_NAMED_PARAMETER(smoothness_weights_t, smoothness_weights, smoothness_weights)
 
 // Frame fields (paper Section 4).
 CGAL_PVF_ADD_NAMED_PARAMETER(angle_bound_t, angle_bound, angle_bound)
@@ -72,6 +75,32 @@ CGAL_PVF_ADD_NAMED_PARAMETER(expected_degree_t, expected_degree, expected_degree
 CGAL_PVF_ADD_NAMED_PARAMETER(maximum_file_size_t, maximum_file_size, maximum_file_size)
 /// `bool`: whether a mesh reader repairs what it can (see `IO::read_triangle_mesh()`).
 CGAL_PVF_ADD_NAMED_PARAMETER(repair_t, repair, repair)
+
+// Parametrization (integer-grid maps).
+/// `double` in (0, pi/2], in radians: frames whose two directions make a smaller angle
+/// (or one larger than pi minus it) are clamped to it (see `comb_frame_field()`).
+CGAL_PVF_ADD_NAMED_PARAMETER(minimum_frame_angle_t, minimum_frame_angle, minimum_frame_angle)
+
+/// `double > 0`: the length, in mesh units, of one unit of uv along the unit field directions (the quad size).
+CGAL_PVF_ADD_NAMED_PARAMETER(target_edge_length_t, target_edge_length, target_edge_length)
+/// `double > 0`: growth of the face weights at each stiffening round.
+CGAL_PVF_ADD_NAMED_PARAMETER(stiffening_factor_t, stiffening_factor, stiffening_factor)
+/// `bool`: refactor the whole system after each rounding instead of the Schur-complement update (a reference, for tests and benchmarks).
+CGAL_PVF_ADD_NAMED_PARAMETER(rounding_by_refactorization_t, rounding_by_refactorization, rounding_by_refactorization)
+
+// Quad meshes.
+/// `bool`: `extract_quad_mesh()` keeps the cells cut by the mesh boundary as trimmed polygons; default `false` (whole quads only).
+CGAL_PVF_ADD_NAMED_PARAMETER(keep_trimmed_boundary_t, keep_trimmed_boundary, keep_trimmed_boundary)
+/// `std::size_t`: the largest ring count of a fold-over repair region of `extract_quad_mesh()` (0: no repair); default 6.
+CGAL_PVF_ADD_NAMED_PARAMETER(fold_over_repair_rings_t, fold_over_repair_rings, fold_over_repair_rings)
+/// `double > 0`: the largest face planarity that `planarize_quad_mesh()` must reach; default 0.01 (1%).
+CGAL_PVF_ADD_NAMED_PARAMETER(planarity_threshold_t, planarity_threshold, planarity_threshold)
+/// `double > 0`: the weight of the closeness (proximal) term of `planarize_quad_mesh()`; default 1.
+CGAL_PVF_ADD_NAMED_PARAMETER(closeness_weight_t, closeness_weight, closeness_weight)
+/// `double >= 0`: the weight of the fairness term (second differences along the polylines) of `planarize_quad_mesh()`; default 0.1.
+CGAL_PVF_ADD_NAMED_PARAMETER(fairness_weight_t, fairness_weight, fairness_weight)
+/// `double` in (0, 1]: the factor applied at each iteration of `planarize_quad_mesh()` to the pull towards the surface and to the fairness target; default 0.9.
+CGAL_PVF_ADD_NAMED_PARAMETER(closeness_decay_t, closeness_decay, closeness_decay)
 
 // Curvature estimation and curvature constraints.
 CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)

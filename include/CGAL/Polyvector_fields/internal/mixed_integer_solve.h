@@ -1,0 +1,282 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_MIXED_INTEGER_SOLVE_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_MIXED_INTEGER_SOLVE_H
+
+// The least-squares problem of the integer-grid map with integer unknowns
+// (compute_integer_grid_map()): minimise |W^(1/2) (B y - d)|^2 over
+// y = (x continuous, n integer). The continuous block is factored once
+// through the solver traits; the integer unknowns are eliminated through
+// their Schur complement and rounded greedily, closest to an integer first,
+// with an exact update of the small dense system after each rounding.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+template <typename T, typename = void>
+struct Has_eigen_block_solve : std::false_type {};
+template <typename T>
+struct Has_eigen_block_solve<T, std::void_t<decltype(std::declval<T&>().solver().solve(std::declval<const Eigen::MatrixXd&>()))> >
+  : std::true_type {};
+
+// A factorization through the solver traits, kept alive for several solves.
+template <typename SolverTraits>
+class Factored_system
+{
+public:
+  explicit Factored_system(const SolverTraits& prototype) : m_solver(prototype) {}
+  bool factor(const Eigen::SparseMatrix<double>& A)
+  {
+    m_storage = typename SolverTraits::Matrix(A);
+    double D = 1;
+    return m_solver.factor(m_storage, D);
+  }
+  // solves A X = B for a dense block B (one solve per column without an Eigen solver)
+  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+  {
+    X.resize(B.rows(), B.cols());
+    if constexpr(Has_eigen_block_solve<SolverTraits>::value)
+    {
+      X = m_solver.solver().solve(B);
+      if(m_solver.solver().info() != Eigen::Success)
+        return false;
+    }
+    else
+    {
+      typename SolverTraits::Vector b(B.rows()), x(B.rows());
+      for(Eigen::Index j = 0; j < B.cols(); ++j)
+      {
+        for(Eigen::Index i = 0; i < B.rows(); ++i)
+          b[i] = B(i, j);
+        if(!m_solver.linear_solver(b, x))
+          return false;
+        for(Eigen::Index i = 0; i < B.rows(); ++i)
+          X(i, j) = x[i];
+      }
+    }
+    return X.allFinite();
+  }
+
+private:
+  SolverTraits m_solver;
+  typename SolverTraits::Matrix m_storage;
+};
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// One solve of the mixed-integer problem with face weights w:
+// minimise |W^(1/2)(B y - d)|^2, y = (x continuous, n integer).
+template <typename SolverTraits, typename Report>
+Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eigen::VectorXd& d1,
+                               const std::vector<double>& row_weight, std::size_t nx, std::size_t m,
+                               const SolverTraits& prototype, bool refactor_per_rounding,
+                               Eigen::VectorXd& y_continuous, Eigen::VectorXd& y_rounded,
+                               Report& result)
+{
+  auto t = std::chrono::steady_clock::now();
+  Eigen::SparseMatrix<double> B = B1;
+  Eigen::VectorXd d = d1;
+  for(Eigen::Index k = 0; k < B.outerSize(); ++k)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(B, k); it; ++it)
+      it.valueRef() *= row_weight[std::size_t(it.row())];
+  for(Eigen::Index r = 0; r < d.size(); ++r)
+    d[r] *= row_weight[std::size_t(r)];
+  const Eigen::SparseMatrix<double> Bx = B.leftCols(Eigen::Index(nx));
+  const Eigen::SparseMatrix<double> Bn = B.rightCols(Eigen::Index(m));
+  const Eigen::SparseMatrix<double> BxT = Bx.transpose();
+  const Eigen::SparseMatrix<double> Kxx = (BxT * Bx).pruned();
+  const Eigen::SparseMatrix<double> Kxn = (BxT * Bn).pruned();  // few non-zero rows: the seams' neighbourhoods
+  const Eigen::VectorXd bx = BxT * d;
+  result.time_assembly += seconds_since(t);
+
+  t = std::chrono::steady_clock::now();
+  Factored_system<SolverTraits> system(prototype);
+  if(!system.factor(Kxx))
+    return Error_code::SOLVER_FAILURE;
+  ++result.factorizations;
+  result.time_factorization += seconds_since(t);
+  t = std::chrono::steady_clock::now();
+  Eigen::MatrixXd X;
+  if(!system.solve(bx, X))
+    return Error_code::SOLVER_FAILURE;
+  const Eigen::VectorXd x0 = X.col(0);
+  y_continuous.resize(Eigen::Index(nx + m));
+  y_rounded.resize(Eigen::Index(nx + m));
+  if(m == 0)
+  {
+    y_continuous = x0;
+    y_rounded = x0;
+    result.time_schur += seconds_since(t);
+    return Error_code::SUCCESS;
+  }
+
+  // Schur complement of the integer unknowns, S n = g, with
+  // S = Knn - Kxn^T Kxx^-1 Kxn, g = bn - Kxn^T x0: block solves of 64 columns.
+  const Eigen::SparseMatrix<double> KxnT = Kxn.transpose();
+  Eigen::MatrixXd S = Eigen::MatrixXd(Eigen::SparseMatrix<double>(Bn.transpose() * Bn));
+  const Eigen::VectorXd g = Bn.transpose() * d - KxnT * x0;
+  const Eigen::Index block = 64;
+  for(Eigen::Index j0 = 0; j0 < Eigen::Index(m); j0 += block)
+  {
+    const Eigen::Index w = (std::min)(block, Eigen::Index(m) - j0);
+    const Eigen::MatrixXd R = Eigen::MatrixXd(Kxn.middleCols(j0, w));
+    if(!system.solve(R, X))
+      return Error_code::SOLVER_FAILURE;
+    S.middleCols(j0, w) -= KxnT * X;
+  }
+  S = 0.5 * (S + S.transpose());
+  result.time_schur += seconds_since(t);
+
+  t = std::chrono::steady_clock::now();
+  Eigen::LLT<Eigen::MatrixXd> llt(S);
+  if(llt.info() != Eigen::Success)
+    return Error_code::SOLVER_FAILURE;
+  Eigen::MatrixXd H = llt.solve(Eigen::MatrixXd::Identity(S.rows(), S.cols()));
+  Eigen::VectorXd n = llt.solve(g);
+  result.time_rounding += seconds_since(t);
+  // continuous unknowns for given integers: x = Kxx^-1 (bx - Kxn n)
+  auto continuous_part = [&](const Eigen::VectorXd& nn, Eigen::VectorXd& x) {
+    const auto t2 = std::chrono::steady_clock::now();
+    Eigen::MatrixXd sol;
+    const bool ok = system.solve(Eigen::VectorXd(bx - Kxn * nn), sol);
+    if(ok)
+      x = sol.col(0);
+    result.time_schur += seconds_since(t2);
+    return ok;
+  };
+  Eigen::VectorXd xc;
+  if(!continuous_part(n, xc))
+    return Error_code::SOLVER_FAILURE;
+  y_continuous.head(Eigen::Index(nx)) = xc;
+  y_continuous.tail(Eigen::Index(m)) = n;
+  t = std::chrono::steady_clock::now();
+
+  std::vector<char> free_var(m, 1);
+  if(!refactor_per_rounding)
+  {
+    // Greedy rounding, the unknown closest to an integer first. Fixing n_j = v
+    // moves the minimiser of the others by H_.j (v - n_j) / H_jj and the inverse
+    // of the remaining block is H - H_.j H_j. / H_jj: O(m^2) per rounding, no refactorization.
+    for(std::size_t step = 0; step < m; ++step)
+    {
+      std::size_t j = m;
+      double best = 2;
+      for(std::size_t i = 0; i < m; ++i)
+        if(free_var[i])
+        {
+          const double e = std::abs(n[Eigen::Index(i)] - std::round(n[Eigen::Index(i)]));
+          if(e < best)
+          {
+            best = e;
+            j = i;
+          }
+        }
+      const Eigen::Index J = Eigen::Index(j);
+      const double value = std::round(n[J]), hjj = H(J, J);
+      if(!(hjj > 0))
+        return Error_code::SOLVER_FAILURE;
+      const Eigen::VectorXd h = H.col(J);
+      n += h * ((value - n[J]) / hjj);
+      H.noalias() -= h * (h.transpose() / hjj);
+      n[J] = value;
+      free_var[j] = 0;
+    }
+    result.time_rounding += seconds_since(t);
+  }
+  else
+  {
+    // Reference: after each rounding, refactor the system of the remaining unknowns.
+    result.time_rounding += seconds_since(t);
+    Eigen::VectorXd current = n;  // free entries: current minimiser; fixed entries: their integer
+    for(std::size_t step = 0; step < m; ++step)
+    {
+      std::size_t j = m;
+      double best = 2;
+      for(std::size_t i = 0; i < m; ++i)
+        if(free_var[i])
+        {
+          const double e = std::abs(current[Eigen::Index(i)] - std::round(current[Eigen::Index(i)]));
+          if(e < best)
+          {
+            best = e;
+            j = i;
+          }
+        }
+      current[Eigen::Index(j)] = std::round(current[Eigen::Index(j)]);
+      free_var[j] = 0;
+      auto t1 = std::chrono::steady_clock::now();
+      std::vector<Eigen::Triplet<double> > select;
+      Eigen::VectorXd fixed_part = Eigen::VectorXd::Zero(Eigen::Index(m));
+      std::vector<std::size_t> free_list;
+      for(std::size_t i = 0; i < nx; ++i)
+        select.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.0);
+      for(std::size_t i = 0; i < m; ++i)
+        if(free_var[i])
+        {
+          select.emplace_back(Eigen::Index(nx + i), Eigen::Index(nx + free_list.size()), 1.0);
+          free_list.push_back(i);
+        }
+        else
+          fixed_part[Eigen::Index(i)] = current[Eigen::Index(i)];
+      const std::size_t columns = nx + free_list.size();
+      Eigen::SparseMatrix<double> Sel(Eigen::Index(nx + m), Eigen::Index(columns));
+      Sel.setFromTriplets(select.begin(), select.end());
+      const Eigen::SparseMatrix<double> Br = B * Sel;
+      const Eigen::VectorXd dr = d - Bn * fixed_part;
+      const Eigen::SparseMatrix<double> BrT = Br.transpose();
+      Eigen::SparseMatrix<double> Kr = (BrT * Br).pruned();
+      Eigen::MatrixXd r(Eigen::Index(columns), 1);
+      r.col(0) = BrT * dr;
+      result.time_assembly += seconds_since(t1);
+      const auto t2 = std::chrono::steady_clock::now();
+      Factored_system<SolverTraits> reduced(prototype);
+      Eigen::MatrixXd sol;
+      if(!reduced.factor(Kr) || !reduced.solve(r, sol))
+        return Error_code::SOLVER_FAILURE;
+      result.time_factorization += seconds_since(t2);
+      ++result.factorizations;
+      for(std::size_t k = 0; k < free_list.size(); ++k)
+        current[Eigen::Index(free_list[k])] = sol(Eigen::Index(nx + k), 0);
+      if(step + 1 == m)
+        y_rounded.head(Eigen::Index(nx)) = sol.col(0).head(Eigen::Index(nx));
+    }
+    y_rounded.tail(Eigen::Index(m)) = current;
+    return Error_code::SUCCESS;
+  }
+  Eigen::VectorXd xr;
+  if(!continuous_part(n, xr))
+    return Error_code::SOLVER_FAILURE;
+  y_rounded.head(Eigen::Index(nx)) = xr;
+  y_rounded.tail(Eigen::Index(m)) = n;
+  return Error_code::SUCCESS;
+}
+
+} // namespace internal
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_MIXED_INTEGER_SOLVE_H

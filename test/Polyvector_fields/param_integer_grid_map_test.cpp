@@ -1,0 +1,878 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+// Tests of comb_frame_field() and compute_integer_grid_map() (issue 12).
+// Every property is checked by code written here, from the output maps only.
+// Everything is in an anonymous namespace and the suites are named Igm*, so
+// that the file shares no name with the other test files.
+
+#include "test_meshes.h"
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
+
+#include <CGAL/Polyvector_fields/IO/constraints.h>
+#include <CGAL/Polyvector_fields/compute_singularities.h>
+#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_polyvector_field.h>
+#include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
+#include <CGAL/Polyvector_fields/face_frames.h>
+#include <CGAL/Polyvector_fields/polyvector_polynomial.h>
+#include <CGAL/Polyvector_fields/select_curvature_constraints.h>
+
+#include <CGAL/Polyvector_fields/IO/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
+#include <CGAL/Polyvector_fields/comb_frame_field.h>
+#include <CGAL/Polyvector_fields/integer_grid_map.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <random>
+#include <set>
+#include <sstream>
+
+namespace {
+
+namespace PVF = CGAL::Polyvector_fields;
+using namespace pvf_test;  // Mesh, Vector, Point, Kernel, pi, load, data, grid, sphere, torus, ...
+typedef Mesh::Face_index Face;
+typedef Mesh::Halfedge_index Halfedge;
+typedef Mesh::Vertex_index Vertex;
+typedef std::complex<double> Complex;
+typedef std::array<double, 2> UV;
+typedef PVF::Face_constraint<Face, Vector> Constraint;
+
+// ---------------------------------------------------------------------------
+// Fields of the measured runs, designed with the package's API.
+// ---------------------------------------------------------------------------
+
+struct Case
+{
+  std::string name;
+  Mesh tm;
+  Mesh::Property_map<Face, std::vector<Complex> > field;
+  double h = -1;  // < 0: default
+};
+
+std::unique_ptr<Case> make_case(const std::string& name)
+{
+  auto c = std::make_unique<Case>();
+  c->name = name;
+  const bool inspired = name.rfind("inspired", 0) == 0;
+  std::vector<Constraint> constraints;
+  if(name == "sphere")
+    c->tm = sphere(3);
+  else if(name == "torus")
+    c->tm = torus(40, 16);
+  else
+    c->tm = load(inspired ? "inspired_mesh.obj" : name + ".off");
+  Mesh& tm = c->tm;
+  auto curvatures = tm.add_property_map<Face, PVF::Principal_curvatures<Vector> >("f:k").first;
+  if(inspired)
+  {
+    EXPECT_EQ(PVF::IO::read_dmat_constraints(data("inspired_mesh_b.dmat"), data("inspired_mesh_bc.dmat"), tm, constraints),
+              PVF::Error_code::SUCCESS);
+    c->h = 0.82;
+  }
+  else if(name == "fandisk")
+    constraints = pvf_test::sharp_edge_constraints(tm, 30);
+  else
+  {
+    EXPECT_EQ(PVF::estimate_principal_curvatures(tm, curvatures), PVF::Error_code::SUCCESS);
+    EXPECT_EQ(PVF::select_curvature_constraints(tm, curvatures, constraints, PVF::parameters::constrained_fraction(0.01)),
+              PVF::Error_code::SUCCESS);
+    if(constraints.empty())
+      constraints = random_constraints(tm, 3, 2, 7);
+  }
+  c->field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  EXPECT_EQ(PVF::design_polyvector_field(tm, 4, constraints, c->field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  if(name == "inspired_conjugate")
+  {
+    EXPECT_EQ(PVF::estimate_principal_curvatures(tm, curvatures), PVF::Error_code::SUCCESS);
+    PVF::Conjugate_field_result r;
+    EXPECT_EQ(PVF::design_conjugate_frame_field(tm, constraints, c->field, r,
+                                                PVF::parameters::principal_curvature_map(curvatures)),
+              PVF::Error_code::SUCCESS);
+  }
+  return c;
+}
+
+template <typename TM, typename FieldMap, typename UVMap>
+PVF::Error_code run_igm(const TM& tm, FieldMap field, UVMap uv, double h, PVF::Integer_grid_map_result& r)
+{
+  if(h > 0)
+    return PVF::compute_integer_grid_map(tm, field, uv, r, PVF::parameters::target_edge_length(h));
+  return PVF::compute_integer_grid_map(tm, field, uv, r);
+}
+
+// ---------------------------------------------------------------------------
+// Independent checks, from the uv map only.
+// ---------------------------------------------------------------------------
+inline UV rot(const UV& p, int r)
+{
+  switch(r & 3)
+  {
+    case 0: return p;
+    case 1: return { -p[1], p[0] };
+    case 2: return { -p[0], -p[1] };
+    default: return { p[1], -p[0] };
+  }
+}
+
+// Worst mismatch over all interior edges: the two sides must agree up to R^r
+// (r in 0..3) and one integer translation for both endpoints.
+template <typename TM, typename UVMap>
+double worst_seam_mismatch(const TM& tm, UVMap uv, std::size_t* rotated_edges = nullptr)
+{
+  double worst = 0;
+  std::size_t rotated = 0;
+  for(auto e : edges(tm))
+  {
+    const auto h = halfedge(e, tm);
+    if(CGAL::is_border_edge(h, tm))
+      continue;
+    const auto o = opposite(h, tm);
+    const UV a1 = get(uv, h), a0 = get(uv, prev(h, tm)), b1 = get(uv, prev(o, tm)), b0 = get(uv, o);
+    double best = std::numeric_limits<double>::infinity();
+    int best_r = 0;
+    for(int r = 0; r < 4; ++r)
+    {
+      const UV ra1 = rot(a1, r), ra0 = rot(a0, r);
+      const double t1x = b1[0] - ra1[0], t1y = b1[1] - ra1[1], t0x = b0[0] - ra0[0], t0y = b0[1] - ra0[1];
+      const double tx = std::round(t1x), ty = std::round(t1y);
+      const double err = (std::max)({ std::abs(t1x - tx), std::abs(t1y - ty), std::abs(t0x - tx), std::abs(t0y - ty) });
+      if(err < best)
+      {
+        best = err;
+        best_r = r;
+      }
+    }
+    rotated += best_r != 0;
+    worst = (std::max)(worst, best);
+  }
+  if(rotated_edges)
+    *rotated_edges = rotated;
+  return worst;
+}
+
+template <typename TM, typename UVMap>
+std::size_t count_flips(const TM& tm, UVMap uv)
+{
+  std::size_t flips = 0;
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    const UV a = get(uv, h), b = get(uv, next(h, tm)), c = get(uv, prev(h, tm));
+    const double det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    flips += !(det > 0);
+  }
+  return flips;
+}
+
+// Index numerator of an interior vertex read from the map: the uv angles around
+// it sum to 2 pi - k pi / 2.
+template <typename TM, typename UVMap>
+double map_index(const TM& tm, UVMap uv, typename boost::graph_traits<TM>::vertex_descriptor v)
+{
+  double sum = 0;
+  for(auto h : halfedges_around_target(halfedge(v, tm), tm))
+  {
+    const UV p = get(uv, h), a = get(uv, next(h, tm)), b = get(uv, prev(h, tm));
+    const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
+    sum += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  }
+  return (2 * pi - sum) / (pi / 2);
+}
+
+struct Map_checks
+{
+  double seam = 0;
+  std::size_t flips = 0, singular = 0, rotated_edges = 0;
+  double singular_off_integer = 0, index_mismatch = 0, index_not_integer = 0;
+};
+
+Map_checks check_map(const Case& c, Mesh::Property_map<Halfedge, UV> uv)
+{
+  const Mesh& tm = c.tm;
+  Map_checks m;
+  m.seam = worst_seam_mismatch(tm, uv, &m.rotated_edges);
+  m.flips = count_flips(tm, uv);
+  std::vector<PVF::Singularity<Vertex> > sings;
+  EXPECT_EQ(PVF::compute_singularities(tm, 4, c.field, std::back_inserter(sings)), PVF::Error_code::SUCCESS);
+  std::map<Vertex, int> index;
+  for(const auto& s : sings)
+    index[s.vertex] = s.index_numerator;
+  m.singular = sings.size();
+  for(const auto& s : sings)
+    for(auto h : halfedges_around_target(halfedge(s.vertex, tm), tm))
+    {
+      const UV p = uv[h];
+      m.singular_off_integer = (std::max)({ m.singular_off_integer, std::abs(p[0] - std::round(p[0])), std::abs(p[1] - std::round(p[1])) });
+    }
+  for(Vertex v : vertices(tm))
+  {
+    if(CGAL::is_border(v, tm))
+      continue;
+    const double k = map_index(tm, uv, v);
+    m.index_not_integer = (std::max)(m.index_not_integer, std::abs(k - std::round(k)));
+    const int expected = index.count(v) ? index[v] : 0;
+    m.index_mismatch = (std::max)(m.index_mismatch, std::abs(std::round(k) - expected));
+  }
+  return m;
+}
+
+// A constant frame field {u, v} (world vectors) in every face.
+void constant_field(const Mesh& tm, const Vector& u, const Vector& v, Mesh::Property_map<Face, std::vector<Complex> > field)
+{
+  for(Face f : faces(tm))
+  {
+    PVF::Face_frame fr;
+    ASSERT_EQ(PVF::face_frame(f, tm, fr), PVF::Error_code::SUCCESS);
+    const Complex uc = fr.to_complex(u.x(), u.y(), u.z()), vc = fr.to_complex(v.x(), v.y(), v.z());
+    field[f] = PVF::sign_symmetric_polyvector_coefficients({ uc, vc });
+  }
+}
+
+Mesh jittered_grid(int rows, int cols, unsigned seed)
+{
+  Mesh tm = grid(rows, cols);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-0.15, 0.15);
+  for(Vertex v : vertices(tm))
+    if(!CGAL::is_border(v, tm))
+      tm.point(v) = tm.point(v) + Vector(d(rng), d(rng), 0);
+  return tm;
+}
+
+// On a flat plane with a constant field, uv = R^k J* p + t with J* = h^-1 [u v]^-1, t integer.
+void flat_plane_test(const Vector& u0, const Vector& v0, double h)
+{
+  Mesh tm = jittered_grid(9, 13, 3);
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  constant_field(tm, u0, v0, field);
+  auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(run_igm(tm, field, uv, h, r), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(r.singular_vertices, 0u);
+  EXPECT_EQ(r.flipped_faces, 0u);
+  // dual basis of the unit directions in the plane z = 0
+  const Vector u = u0 / std::sqrt(u0.squared_length()), v = v0 / std::sqrt(v0.squared_length());
+  const double det = u.x() * v.y() - u.y() * v.x();
+  const double J[4] = { v.y() / det / h, -v.x() / det / h, -u.y() / det / h, u.x() / det / h };
+  auto expected = [&](const Point& p) { return UV{ J[0] * p.x() + J[1] * p.y(), J[2] * p.x() + J[3] * p.y() }; };
+  double best = std::numeric_limits<double>::infinity();
+  for(int k = 0; k < 4; ++k)
+  {
+    const Halfedge h0 = *halfedges(tm).begin();
+    const UV e0 = rot(expected(tm.point(target(h0, tm))), k);
+    const UV t = { uv[h0][0] - e0[0], uv[h0][1] - e0[1] };
+    double worst = (std::max)(std::abs(t[0] - std::round(t[0])), std::abs(t[1] - std::round(t[1])));
+    for(Face f : faces(tm))
+      for(Halfedge hh : halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const UV e = rot(expected(tm.point(target(hh, tm))), k);
+        worst = (std::max)({ worst, std::abs(uv[hh][0] - e[0] - t[0]), std::abs(uv[hh][1] - e[1] - t[1]) });
+      }
+    best = (std::min)(best, worst);
+  }
+  EXPECT_LT(best, 1e-9);
+  EXPECT_LT(r.continuous_energy, 1e-20);
+  EXPECT_LT(r.rounded_energy, 1e-20);
+}
+
+// ---------------------------------------------------------------------------
+
+TEST(IgmFlatPlane, OrthogonalConstantFrame) { flat_plane_test(Vector(1, 0, 0), Vector(0, 1, 0), 0.7); }
+
+TEST(IgmFlatPlane, Skewed60ConstantFrame)
+{
+  flat_plane_test(Vector(1, 0, 0), Vector(std::cos(pi / 3), std::sin(pi / 3), 0), 0.45);
+  // and turned in the plane, with non-unit vectors (only directions count)
+  flat_plane_test(Vector(2 * std::cos(0.3), 2 * std::sin(0.3), 0), Vector(0.5 * std::cos(0.3 + pi / 3), 0.5 * std::sin(0.3 + pi / 3), 0), 1.3);
+}
+
+// The 5 measured runs plus a sphere and a torus: seams, singularities, flips.
+class IgmRuns : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(IgmRuns, SeamsSingularitiesAndFlips)
+{
+  std::unique_ptr<Case> c = make_case(GetParam());
+  auto uv = c->tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(run_igm(c->tm, c->field, uv, c->h, r), PVF::Error_code::SUCCESS);
+  const Map_checks m = check_map(*c, uv);
+  EXPECT_LT(m.seam, 1e-9);
+  EXPECT_EQ(m.flips, 0u);
+  EXPECT_EQ(r.flipped_faces, m.flips);
+  EXPECT_LT(m.singular_off_integer, 1e-9);
+  EXPECT_LT(m.index_not_integer, 1e-6);
+  EXPECT_EQ(m.index_mismatch, 0.0);
+  EXPECT_EQ(m.singular, r.singular_vertices);
+  EXPECT_EQ(r.inconsistencies, 0u);
+  if(m.singular > 0)
+  {
+    EXPECT_GT(m.rotated_edges, 0u);  // seams with a rotation are exercised
+  }
+  std::printf("[ %s ] faces %zu singular %zu seams %zu integer unknowns %zu flips %zu (rounds %zu) ratio %.4f seam %.2g\n",
+              GetParam().c_str(), r.faces, r.singular_vertices, r.seam_curves, r.integer_unknowns, m.flips,
+              r.stiffening_rounds, r.energy_ratio, m.seam);
+}
+
+INSTANTIATE_TEST_SUITE_P(Igm, IgmRuns,
+                         ::testing::Values("inspired", "inspired_conjugate", "bumpy", "eight", "fandisk", "sphere", "torus"));
+
+// The cut opens every component into a disk, passes through every singular
+// vertex, and the combed frames match by the identity across every other edge.
+TEST(IgmComb, CutIsADiskThroughSingularities)
+{
+  for(const std::string name : { "bumpy", "eight", "inspired_conjugate" })
+  {
+    std::unique_ptr<Case> c = make_case(name);
+    Mesh& tm = c->tm;
+    auto cut = tm.add_property_map<Mesh::Edge_index, bool>("e:cut").first;
+    auto combed = tm.add_property_map<Face, std::array<Vector, 2> >("f:combed").first;
+    auto rotation = tm.add_property_map<Halfedge, int>("h:rot").first;
+    PVF::Comb_result r;
+    ASSERT_EQ(PVF::comb_frame_field(tm, c->field, cut, combed, rotation, r), PVF::Error_code::SUCCESS);
+    // singular vertices on the cut
+    std::vector<PVF::Singularity<Vertex> > sings;
+    ASSERT_EQ(PVF::compute_singularities(tm, 4, c->field, std::back_inserter(sings)), PVF::Error_code::SUCCESS);
+    for(const auto& s : sings)
+    {
+      bool on_cut = false;
+      for(auto h : halfedges_around_target(halfedge(s.vertex, tm), tm))
+        on_cut |= cut[edge(h, tm)];
+      EXPECT_TRUE(on_cut) << name;
+    }
+    // Euler characteristic of the cut-open mesh: corners glued across non-cut edges
+    std::map<Halfedge, Halfedge> parent;
+    std::function<Halfedge(Halfedge)> find = [&](Halfedge h) { return parent[h] == h ? h : parent[h] = find(parent[h]); };
+    for(Halfedge h : halfedges(tm))
+      if(!is_border(h, tm))
+        parent[h] = h;
+    std::size_t E = 0;
+    for(auto e : edges(tm))
+    {
+      const Halfedge h = halfedge(e, tm), o = opposite(h, tm);
+      if(is_border(h, tm) || is_border(o, tm))
+      {
+        ++E;
+        continue;
+      }
+      if(cut[e])
+      {
+        E += 2;
+        continue;
+      }
+      ++E;
+      // corner at target(h) in face(h) ~ corner at target(h) in face(o), i.e. prev(o)
+      parent[find(h)] = find(prev(o, tm));
+      parent[find(prev(h, tm))] = find(o);
+    }
+    std::size_t Vc = 0;
+    for(auto& kv : parent)
+      Vc += find(kv.first) == kv.first;
+    EXPECT_EQ(long(Vc) - long(E) + long(num_faces(tm)), 1) << name;  // one component: a disk
+    // combed frames: across non-cut edges the matching is the identity
+    double worst = 0;
+    std::size_t nearest_disagree = 0;
+    for(auto e : edges(tm))
+    {
+      const Halfedge h = halfedge(e, tm);
+      if(CGAL::is_border_edge(h, tm) || cut[e])
+        continue;
+      const Face f = face(h, tm), g = face(opposite(h, tm), tm);
+      // unfold: rotate u_f about the edge into g's plane
+      PVF::Face_frame ff, fg;
+      PVF::face_frame(f, tm, ff);
+      PVF::face_frame(g, tm, fg);
+      Vector d = tm.point(target(h, tm)) - tm.point(source(h, tm));
+      d = d / std::sqrt(d.squared_length());
+      const Vector nf(ff.normal[0], ff.normal[1], ff.normal[2]), ng(fg.normal[0], fg.normal[1], fg.normal[2]);
+      const Vector bf = CGAL::cross_product(nf, d), bg = CGAL::cross_product(ng, d);
+      // the four combed roots of f, moved into g's plane, against those of g, in the same order:
+      // the sum of their rotations must lie in (-pi, pi] (the principal matching is the identity)
+      auto turn = [&](const Vector& x) { return (x * d) * d + (x * bf) * bg; };
+      const Vector rf[4] = { turn(combed[f][0]), turn(combed[f][1]), -turn(combed[f][0]), -turn(combed[f][1]) };
+      const Vector rg[4] = { combed[g][0], combed[g][1], -combed[g][0], -combed[g][1] };
+      double sum = 0;
+      for(int k = 0; k < 4; ++k)
+        sum += std::atan2(CGAL::cross_product(rf[k], rg[k]) * ng, rf[k] * rg[k]);
+      worst = (std::max)(worst, double(!(sum > -pi && sum <= pi)));
+      // and the nearest-vector matching agrees except where the frame changes shape a lot
+      double best = 1e9;
+      int arg = 0;
+      for(int k = 0; k < 4; ++k)
+        if((rf[0] - rg[k]).squared_length() < best)
+        {
+          best = (rf[0] - rg[k]).squared_length();
+          arg = k;
+        }
+      nearest_disagree += arg != 0;
+      EXPECT_EQ(rotation[h], 0);
+    }
+    EXPECT_EQ(worst, 0.0) << name;
+    EXPECT_EQ(r.singular_vertices, sings.size());
+    std::printf("[ %s ] cut edges %zu, non-cut edges where the nearest-u matching differs from the principal one: %zu\n",
+                name.c_str(), r.cut_edges, nearest_disagree);
+  }
+}
+
+// A rigid motion changes the map only by a rotation in Z4 and a translation.
+TEST(IgmInvariance, RigidMotion)
+{
+  std::unique_ptr<Case> c = make_case("inspired_conjugate");
+  auto uv = c->tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(run_igm(c->tm, c->field, uv, c->h, r), PVF::Error_code::SUCCESS);
+
+  const Rigid_motion motion(12);
+  Mesh moved = c->tm;
+  for(Vertex v : vertices(moved))
+    moved.point(v) = motion(moved.point(v));
+  std::vector<Constraint> constraints;
+  ASSERT_EQ(PVF::IO::read_dmat_constraints(data("inspired_mesh_b.dmat"), data("inspired_mesh_bc.dmat"), moved, constraints),
+            PVF::Error_code::SUCCESS);
+  for(Constraint& k : constraints)
+    for(Vector& x : k.vectors)
+      x = motion(x);
+  auto field = moved.add_property_map<Face, std::vector<Complex> >("f:moved_field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(moved, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  auto curvatures = moved.add_property_map<Face, PVF::Principal_curvatures<Vector> >("f:moved_k").first;
+  ASSERT_EQ(PVF::estimate_principal_curvatures(moved, curvatures), PVF::Error_code::SUCCESS);
+  PVF::Conjugate_field_result cr;
+  ASSERT_EQ(PVF::design_conjugate_frame_field(moved, constraints, field, cr, PVF::parameters::principal_curvature_map(curvatures)),
+            PVF::Error_code::SUCCESS);
+  auto uv2 = moved.add_property_map<Halfedge, UV>("h:uv2").first;
+  PVF::Integer_grid_map_result r2;
+  ASSERT_EQ(run_igm(moved, field, uv2, c->h, r2), PVF::Error_code::SUCCESS);
+  double best = std::numeric_limits<double>::infinity();
+  for(int k = 0; k < 4; ++k)
+  {
+    const Halfedge h0 = halfedge(*faces(moved).begin(), moved);
+    const UV a = rot(uv[h0], k);
+    const UV t = { uv2[h0][0] - a[0], uv2[h0][1] - a[1] };
+    double worst = 0;
+    for(Face f : faces(moved))
+      for(Halfedge h : halfedges_around_face(halfedge(f, moved), moved))
+      {
+        const UV b = rot(uv[h], k);
+        worst = (std::max)({ worst, std::abs(uv2[h][0] - b[0] - t[0]), std::abs(uv2[h][1] - b[1] - t[1]) });
+      }
+    best = (std::min)(best, worst);
+  }
+  EXPECT_LT(best, 1e-6);
+  EXPECT_GT(r.singular_vertices, 0u);
+}
+
+// Surface_mesh and Polyhedron_3 give identical maps.
+TEST(IgmGeneric, SurfaceMeshAndPolyhedron)
+{
+  typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::face_descriptor P_face;
+  typedef boost::graph_traits<Polyhedron>::halfedge_descriptor P_halfedge;
+  for(const std::string name : { "bumpy.off", "fandisk.off" })
+  {
+    Mesh sm = load(name);
+    Polyhedron poly = load<Polyhedron>(name);
+    const auto constraints = random_constraints(sm, 12, 2, 5);
+    auto sfield = sm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+    ASSERT_EQ(PVF::design_polyvector_field(sm, 4, constraints, sfield, PVF::parameters::sign_symmetric(true)),
+              PVF::Error_code::SUCCESS);
+    std::vector<P_face> pf(faces(poly).begin(), faces(poly).end());
+    std::vector<PVF::Face_constraint<P_face, Vector> > pc;
+    for(const Constraint& c : constraints)
+      pc.push_back({ pf[std::size_t(c.face)], c.vectors, c.weight });
+    std::map<P_face, std::vector<Complex> > pcoef;
+    auto pfield = boost::make_assoc_property_map(pcoef);
+    ASSERT_EQ(PVF::design_polyvector_field(poly, 4, pc, pfield, PVF::parameters::sign_symmetric(true)),
+              PVF::Error_code::SUCCESS);
+    auto suv = sm.add_property_map<Halfedge, UV>("h:uv").first;
+    std::map<P_halfedge, UV> puv_store;
+    auto puv = boost::make_assoc_property_map(puv_store);
+    PVF::Integer_grid_map_result sr, pr;
+    ASSERT_EQ(PVF::compute_integer_grid_map(sm, sfield, suv, sr), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(PVF::compute_integer_grid_map(poly, pfield, puv, pr), PVF::Error_code::SUCCESS);
+    double worst = 0;
+    std::size_t i = 0;
+    std::vector<Face> sf(faces(sm).begin(), faces(sm).end());
+    for(P_face f : pf)
+    {
+      auto hs = halfedge(sf[i++], sm);
+      auto hp = halfedge(f, poly);
+      for(int k = 0; k < 3; ++k, hs = next(hs, sm), hp = next(hp, poly))
+        worst = (std::max)({ worst, std::abs(suv[hs][0] - puv[hp][0]), std::abs(suv[hs][1] - puv[hp][1]) });
+    }
+    EXPECT_EQ(worst, 0.0) << name;
+    EXPECT_EQ(sr.integer_unknowns, pr.integer_unknowns);
+    EXPECT_EQ(sr.flipped_faces, pr.flipped_faces);
+  }
+}
+
+// Greedy rounding through the Schur complement gives the same integers as
+// refactoring the whole system after each rounding.
+TEST(IgmRounding, SchurUpdateMatchesRefactorization)
+{
+  std::unique_ptr<Case> c = make_case("bumpy");
+  auto a = c->tm.add_property_map<Halfedge, UV>("h:a").first;
+  auto b = c->tm.add_property_map<Halfedge, UV>("h:b").first;
+  PVF::Integer_grid_map_result ra, rb;
+  ASSERT_EQ(PVF::compute_integer_grid_map(c->tm, c->field, a, ra, CGAL::parameters::number_of_iterations(0)),
+            PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::compute_integer_grid_map(c->tm, c->field, b, rb,
+                                          PVF::parameters::rounding_by_refactorization(true, CGAL::parameters::number_of_iterations(0))),
+            PVF::Error_code::SUCCESS);
+  double worst = 0;
+  for(Halfedge h : halfedges(c->tm))
+    if(!is_border(h, c->tm))
+      worst = (std::max)({ worst, std::abs(a[h][0] - b[h][0]), std::abs(a[h][1] - b[h][1]) });
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_EQ(rb.factorizations, 1 + rb.integer_unknowns);
+  EXPECT_EQ(ra.factorizations, 1u);
+}
+
+// The OBJ writer: one vt per corner, integer points exactly at integers.
+TEST(IgmOutput, ObjWithTextureCoordinates)
+{
+  std::unique_ptr<Case> c = make_case("bumpy");
+  auto uv = c->tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(run_igm(c->tm, c->field, uv, c->h, r), PVF::Error_code::SUCCESS);
+  const std::string file = "igm_test_output.obj";
+  ASSERT_EQ(PVF::IO::write_integer_grid_map_OBJ(file, c->tm, uv), PVF::Error_code::SUCCESS);
+  std::ifstream in(file);
+  std::string line;
+  std::size_t v = 0, vt = 0, f = 0;
+  std::vector<UV> tex;
+  std::vector<std::array<std::size_t, 6> > fs;
+  while(std::getline(in, line))
+  {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if(tag == "v") ++v;
+    else if(tag == "vt") { UV t; s >> t[0] >> t[1]; tex.push_back(t); ++vt; }
+    else if(tag == "f")
+    {
+      std::array<std::size_t, 6> x;
+      char slash;
+      for(int k = 0; k < 3; ++k)
+        s >> x[2 * k] >> slash >> x[2 * k + 1];
+      fs.push_back(x);
+      ++f;
+    }
+  }
+  EXPECT_EQ(v, num_vertices(c->tm));
+  EXPECT_EQ(f, num_faces(c->tm));
+  EXPECT_EQ(vt, 3 * num_faces(c->tm));
+  // the values read back are the map's, to the last bit
+  std::size_t i = 0;
+  double worst = 0;
+  for(Face fc : faces(c->tm))
+    for(Halfedge h : halfedges_around_face(halfedge(fc, c->tm), c->tm))
+    {
+      worst = (std::max)({ worst, std::abs(tex[i][0] - uv[h][0]), std::abs(tex[i][1] - uv[h][1]) });
+      ++i;
+    }
+  EXPECT_EQ(worst, 0.0);
+  std::remove(file.c_str());
+  EXPECT_EQ(PVF::IO::write_integer_grid_map_OBJ("/nonexistent/dir/x.obj", c->tm, uv), PVF::Error_code::CANNOT_OPEN_FILE);
+}
+
+// ---------------------------------------------------------------------------
+// Bad input.
+// ---------------------------------------------------------------------------
+struct Failing_solver : PVF::Default_real_sparse_solver
+{
+  bool factor(const Matrix&, NT& D)
+  {
+    D = 1;
+    return false;
+  }
+};
+
+struct IgmBadInput : ::testing::Test
+{
+  Mesh tm = jittered_grid(4, 5, 1);
+  Mesh::Property_map<Face, std::vector<Complex> > field;
+  Mesh::Property_map<Halfedge, UV> uv;
+  void SetUp() override
+  {
+    field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+    constant_field(tm, Vector(1, 0, 0), Vector(0, 1, 0), field);
+    uv = tm.add_property_map<Halfedge, UV>("h:uv", UV{ 7, 7 }).first;
+  }
+  bool untouched() const
+  {
+    for(Halfedge h : halfedges(tm))
+      if(uv[h] != UV{ 7, 7 })
+        return false;
+    return true;
+  }
+};
+
+TEST_F(IgmBadInput, NotAFrameField)
+{
+  PVF::Integer_grid_map_result r;
+  const Face f(7);
+  field[f][1] = Complex(0.3, 0);  // odd coefficient
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::NOT_A_FRAME_FIELD);
+  EXPECT_EQ(r.comb.first_invalid_face, 7u);
+  field[f].resize(3);  // wrong size
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::NOT_A_FRAME_FIELD);
+  field[f] = std::vector<Complex>(4, Complex(0));  // zero frame: cannot be clamped
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::ZERO_FRAME);
+  EXPECT_EQ(r.comb.first_invalid_face, 7u);
+  EXPECT_STREQ(PVF::get_error_message(PVF::Error_code::ZERO_FRAME),
+               "a face of the frame field has a zero frame (both vectors zero), which cannot be clamped");
+  field[f] = { Complex(std::nan(""), 0), 0, 1, 0 };
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::NON_FINITE_VALUE);
+  EXPECT_TRUE(untouched());
+}
+
+TEST_F(IgmBadInput, DegenerateFramesAreClamped)
+{
+  PVF::Integer_grid_map_result r;
+  PVF::Face_frame fr;
+  PVF::face_frame(Face(3), tm, fr);
+  // u and v 1 degree apart
+  field[Face(3)] = PVF::sign_symmetric_polyvector_coefficients({ Complex(1, 0), std::polar(1.0, pi / 180) });
+  // one zero vector
+  field[Face(9)] = PVF::sign_symmetric_polyvector_coefficients({ Complex(0, 0), Complex(0.3, 0.4) });
+  ASSERT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(r.clamped_faces, 2u);
+  EXPECT_EQ(count_flips(tm, uv), 0u);
+}
+
+TEST_F(IgmBadInput, EdgeLength)
+{
+  PVF::Integer_grid_map_result r;
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r, PVF::parameters::target_edge_length(0.0)),
+            PVF::Error_code::INVALID_PARAMETER);
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r, PVF::parameters::target_edge_length(-1.0)),
+            PVF::Error_code::INVALID_PARAMETER);
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r, PVF::parameters::target_edge_length(std::nan(""))),
+            PVF::Error_code::NON_FINITE_VALUE);
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r, PVF::parameters::minimum_frame_angle(0.0)),
+            PVF::Error_code::INVALID_PARAMETER);
+  EXPECT_TRUE(untouched());
+  ASSERT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::SUCCESS);
+  EXPECT_NEAR(r.target_edge_length, r.mean_edge_length, 0.0);  // the default
+}
+
+TEST_F(IgmBadInput, SolverFailure)
+{
+  PVF::Integer_grid_map_result r;
+  EXPECT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r, CGAL::parameters::sparse_linear_solver(Failing_solver())),
+            PVF::Error_code::SOLVER_FAILURE);
+  EXPECT_TRUE(untouched());
+}
+
+TEST_F(IgmBadInput, NotATriangleMesh)
+{
+  Mesh quads;
+  CGAL::make_quad(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), quads);
+  auto f = quads.add_property_map<Face, std::vector<Complex> >("f:field", std::vector<Complex>{ 1, 0, 0, 0 }).first;
+  auto u = quads.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  EXPECT_EQ(PVF::compute_integer_grid_map(quads, f, u, r), PVF::Error_code::NON_TRIANGLE_FACE);
+}
+
+// The independent checks above detect what they are meant to detect: each is
+// run on a corrupted copy of a correct map.
+TEST(IgmChecks, DetectCorruption)
+{
+  std::unique_ptr<Case> c = make_case("bumpy");
+  Mesh& tm = c->tm;
+  auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(run_igm(tm, c->field, uv, c->h, r), PVF::Error_code::SUCCESS);
+  ASSERT_LT(check_map(*c, uv).seam, 1e-9);
+  // a seam corner moved by 1e-6: the seam check fails
+  auto bad = tm.add_property_map<Halfedge, UV>("h:bad").first;
+  for(Halfedge h : halfedges(tm))
+    bad[h] = uv[h];
+  std::vector<PVF::Singularity<Vertex> > sings;
+  ASSERT_EQ(PVF::compute_singularities(tm, 4, c->field, std::back_inserter(sings)), PVF::Error_code::SUCCESS);
+  ASSERT_FALSE(sings.empty());
+  const Halfedge hs = halfedge(sings.front().vertex, tm);
+  bad[hs][0] += 1e-6;
+  EXPECT_GT(worst_seam_mismatch(tm, bad), 1e-7);
+  EXPECT_GT(check_map(*c, bad).singular_off_integer, 1e-7);
+  // a face turned over: the flip count fails
+  for(Halfedge h : halfedges(tm))
+    bad[h] = uv[h];
+  const Halfedge hf = halfedge(*faces(tm).begin(), tm);
+  std::swap(bad[hf], bad[next(hf, tm)]);
+  EXPECT_GT(count_flips(tm, bad), 0u);
+  // the uv scaled by 1.01 about the origin: translations are no longer integer
+  for(Halfedge h : halfedges(tm))
+    bad[h] = { 1.01 * uv[h][0], 1.01 * uv[h][1] };
+  EXPECT_GT(worst_seam_mismatch(tm, bad), 1e-3);
+  // the map of another field (turned by 45 degrees in every face): the index check fails
+  auto turned = tm.add_property_map<Face, std::vector<Complex> >("f:turned").first;
+  for(Face f : faces(tm))
+  {
+    turned[f] = c->field[f];
+    turned[f][0] *= std::polar(1.0, double(std::size_t(f) % 7));  // scrambles c0's argument
+  }
+  auto uv2 = tm.add_property_map<Halfedge, UV>("h:uv2").first;
+  if(PVF::compute_integer_grid_map(tm, turned, uv2, r, CGAL::parameters::number_of_iterations(0)) == PVF::Error_code::SUCCESS)
+  {
+    const Map_checks m = check_map(*c, uv2);  // checked against the original field's singularities
+    EXPECT_TRUE(m.index_mismatch > 0 || m.flips > 0);
+    std::printf("[ scrambled field ] %zu singularities, %zu integer unknowns, index mismatch %g, flips %zu\n",
+                r.singular_vertices, r.integer_unknowns, m.index_mismatch, m.flips);
+  }
+}
+
+// Several components: each one is cut, pinned and rounded on its own.
+TEST(IgmComponents, TwoComponents)
+{
+  Case c;
+  c.name = "two";
+  Mesh a = sphere(2), b = torus(30, 12);
+  for(Vertex v : vertices(b))
+    b.point(v) = b.point(v) + Vector(5, 0, 0);
+  CGAL::copy_face_graph(a, c.tm);
+  CGAL::copy_face_graph(b, c.tm);
+  std::vector<Constraint> constraints = random_constraints(c.tm, 12, 2, 3);
+  constraints.push_back({ Face(0), { Vector(1, 0.2, 0.1) } });
+  constraints.push_back({ Face(Mesh::size_type(num_faces(a) + 1)), { Vector(0.3, 1, 0.2) } });
+  std::set<Face> seen;
+  constraints.erase(std::remove_if(constraints.begin(), constraints.end(),
+                                   [&](const Constraint& k) { return !seen.insert(k.face).second; }),
+                    constraints.end());
+  c.field = c.tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(c.tm, 4, constraints, c.field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  auto uv = c.tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(PVF::compute_integer_grid_map(c.tm, c.field, uv, r, PVF::parameters::target_edge_length(0.2)),
+            PVF::Error_code::SUCCESS);
+  EXPECT_EQ(r.comb.components, 2u);
+  const Map_checks m = check_map(c, uv);
+  EXPECT_LT(m.seam, 1e-9);
+  EXPECT_EQ(m.flips, 0u);
+  EXPECT_LT(m.singular_off_integer, 1e-9);
+  EXPECT_EQ(m.index_mismatch, 0.0);
+  EXPECT_GT(m.singular, 0u);
+}
+
+// The pipeline form: one Tangent_bundle given to both steps gives the maps of
+// the tm + np form, bit for bit; CGAL's members chain after the package's parameters.
+TEST(IgmBundle, SameAsMeshForm)
+{
+  std::unique_ptr<Case> c = make_case("bumpy");
+  Mesh& tm = c->tm;
+  const PVF::Tangent_bundle<Mesh> bundle(tm);
+  ASSERT_EQ(bundle.status(), PVF::Error_code::SUCCESS);
+  auto a = tm.add_property_map<Halfedge, UV>("h:a").first;
+  auto b = tm.add_property_map<Halfedge, UV>("h:b").first;
+  PVF::Integer_grid_map_result ra, rb;
+  ASSERT_EQ(PVF::compute_integer_grid_map(tm, c->field, a, ra,
+                                          PVF::parameters::target_edge_length(0.5).vertex_point_map(tm.points())),
+            PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::compute_integer_grid_map(bundle, c->field, b, rb, PVF::parameters::target_edge_length(0.5)),
+            PVF::Error_code::SUCCESS);
+  double worst = 0;
+  for(Face f : faces(tm))
+    for(Halfedge h : halfedges_around_face(halfedge(f, tm), tm))
+      worst = (std::max)({ worst, std::abs(a[h][0] - b[h][0]), std::abs(a[h][1] - b[h][1]) });
+  EXPECT_EQ(worst, 0.0);
+  EXPECT_EQ(ra.target_edge_length, 0.5);
+  EXPECT_EQ(ra.integer_unknowns, rb.integer_unknowns);
+  EXPECT_EQ(rb.flipped_faces, 0u);
+  EXPECT_GT(rb.seam_curves, 0u);
+
+  auto cut_a = tm.add_property_map<Mesh::Edge_index, bool>("e:cut_a").first;
+  auto cut_b = tm.add_property_map<Mesh::Edge_index, bool>("e:cut_b").first;
+  auto combed_a = tm.add_property_map<Face, std::array<Vector, 2> >("f:combed_a").first;
+  auto combed_b = tm.add_property_map<Face, std::array<Vector, 2> >("f:combed_b").first;
+  auto rot_a = tm.add_property_map<Halfedge, int>("h:rot_a").first;
+  auto rot_b = tm.add_property_map<Halfedge, int>("h:rot_b").first;
+  PVF::Comb_result ca, cb;
+  ASSERT_EQ(PVF::comb_frame_field(tm, c->field, cut_a, combed_a, rot_a, ca), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::comb_frame_field(bundle, c->field, cut_b, combed_b, rot_b, cb), PVF::Error_code::SUCCESS);
+  std::size_t interior_cut = 0;
+  for(auto e : edges(tm))
+  {
+    EXPECT_EQ(cut_a[e], cut_b[e]);
+    interior_cut += cut_b[e] && !CGAL::is_border_edge(halfedge(e, tm), tm);
+  }
+  for(Halfedge h : halfedges(tm))
+    if(!CGAL::is_border_edge(h, tm))
+    {
+      EXPECT_EQ(rot_a[h], rot_b[h]);
+    }
+  for(Face f : faces(tm))
+    EXPECT_EQ(distance(combed_a[f][0], combed_b[f][0]) + distance(combed_a[f][1], combed_b[f][1]), 0.0);
+  // the counts of the combing are those of the map's first stage
+  EXPECT_EQ(cb.cut_edges, interior_cut);
+  EXPECT_EQ(cb.cut_edges, rb.cut_edges);
+  EXPECT_EQ(cb.seam_curves, rb.seam_curves);
+  EXPECT_EQ(cb.singular_vertices, rb.singular_vertices);
+  EXPECT_EQ(cb.components, 1u);
+  // bad parameters of the combing
+  EXPECT_EQ(PVF::comb_frame_field(bundle, c->field, cut_b, combed_b, rot_b, cb, PVF::parameters::minimum_frame_angle(2.0)),
+            PVF::Error_code::INVALID_PARAMETER);
+  EXPECT_EQ(PVF::comb_frame_field(bundle, c->field, cut_b, combed_b, rot_b, cb,
+                                  PVF::parameters::minimum_frame_angle(std::nan(""))),
+            PVF::Error_code::NON_FINITE_VALUE);
+}
+
+// The VTK writer: the map cut open, one point per corner, every face positively oriented.
+TEST(IgmOutput, VtkAndNonFiniteValues)
+{
+  Mesh tm = jittered_grid(5, 6, 2);
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  constant_field(tm, Vector(1, 0.2, 0), Vector(-0.1, 1, 0), field);
+  auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r), PVF::Error_code::SUCCESS);
+  const std::string file = "igm_test_output.vtk";
+  ASSERT_EQ(PVF::IO::write_integer_grid_map_VTK(file, tm, uv), PVF::Error_code::SUCCESS);
+  std::ifstream in(file);
+  std::string line;
+  std::size_t points = 0, positive = 0;
+  bool orientation = false;
+  while(std::getline(in, line))
+  {
+    if(line.rfind("POINTS ", 0) == 0)
+      points = std::stoul(line.substr(7));
+    else if(line.rfind("SCALARS uv_orientation", 0) == 0)
+    {
+      orientation = true;
+      std::getline(in, line);  // LOOKUP_TABLE
+    }
+    else if(orientation)
+      positive += line == "1";
+  }
+  in.close();
+  EXPECT_EQ(points, 3 * num_faces(tm));
+  EXPECT_EQ(positive, num_faces(tm));
+  std::remove(file.c_str());
+  // a NaN texture coordinate: refused, nothing written
+  uv[halfedge(*faces(tm).begin(), tm)][0] = std::nan("");
+  EXPECT_EQ(PVF::IO::write_integer_grid_map_VTK(file, tm, uv), PVF::Error_code::NON_FINITE_VALUE);
+  EXPECT_EQ(PVF::IO::write_integer_grid_map_OBJ("igm_test_nan.obj", tm, uv), PVF::Error_code::NON_FINITE_VALUE);
+  EXPECT_FALSE(std::ifstream(file).good());
+  EXPECT_FALSE(std::ifstream("igm_test_nan.obj").good());
+}
+
+} // namespace

@@ -247,21 +247,10 @@ void constant_field(const Mesh& tm, const Vector& u, const Vector& v, Mesh::Prop
   }
 }
 
-Mesh jittered_grid(int rows, int cols, unsigned seed)
-{
-  Mesh tm = grid(rows, cols);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> d(-0.15, 0.15);
-  for(Vertex v : vertices(tm))
-    if(!CGAL::is_border(v, tm))
-      tm.point(v) = tm.point(v) + Vector(d(rng), d(rng), 0);
-  return tm;
-}
-
 // On a flat plane with a constant field, uv = R^k J* p + t with J* = h^-1 [u v]^-1, t integer.
 void flat_plane_test(const Vector& u0, const Vector& v0, double h)
 {
-  Mesh tm = jittered_grid(9, 13, 3);
+  Mesh tm = pvf_test::jittered_grid(9, 13, 3);
   auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
   constant_field(tm, u0, v0, field);
   auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
@@ -608,7 +597,7 @@ struct Failing_solver : PVF::Default_real_sparse_solver
 
 struct IgmBadInput : ::testing::Test
 {
-  Mesh tm = jittered_grid(4, 5, 1);
+  Mesh tm = pvf_test::jittered_grid(4, 5, 1);
   Mesh::Property_map<Face, std::vector<Complex> > field;
   Mesh::Property_map<Halfedge, UV> uv;
   void SetUp() override
@@ -839,7 +828,7 @@ TEST(IgmBundle, SameAsMeshForm)
 // The VTK writer: the map cut open, one point per corner, every face positively oriented.
 TEST(IgmOutput, VtkAndNonFiniteValues)
 {
-  Mesh tm = jittered_grid(5, 6, 2);
+  Mesh tm = pvf_test::jittered_grid(5, 6, 2);
   auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
   constant_field(tm, Vector(1, 0.2, 0), Vector(-0.1, 1, 0), field);
   auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;

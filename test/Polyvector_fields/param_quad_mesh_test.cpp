@@ -239,17 +239,6 @@ void quad_constant_field(const Mesh& tm, const Vector& u, const Vector& v, Mesh:
   }
 }
 
-Mesh quad_jittered_grid(int rows, int cols, unsigned seed)
-{
-  Mesh tm = grid(rows, cols);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> d(-0.15, 0.15);
-  for(Vertex v : vertices(tm))
-    if(!CGAL::is_border(v, tm))
-      tm.point(v) = tm.point(v) + Vector(d(rng), d(rng), 0);
-  return tm;
-}
-
 // sorted vertex positions and faces (as sorted position lists, cyclically normalised)
 typedef std::array<double, 3> Quad_P3;
 std::pair<std::vector<Quad_P3>, std::vector<std::vector<Quad_P3> > > quad_signature(const Mesh& qm)
@@ -320,7 +309,7 @@ namespace {
 void quad_constant_field_grid(const Vector& u0, const Vector& v0, double h)
 {
   const int rows = 9, cols = 13;
-  Mesh tm = quad_jittered_grid(rows, cols, 3);
+  Mesh tm = pvf_test::jittered_grid(rows, cols, 3);
   auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
   quad_constant_field(tm, u0, v0, field);
   auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;

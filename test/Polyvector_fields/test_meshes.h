@@ -109,6 +109,19 @@ TriangleMesh make_mesh(const Soup<Point_type>& s)
 
 constexpr double pi = 3.14159265358979323846;
 
+// grid(rows, cols) with every interior vertex moved by up to 0.15 in x and y
+// (seeded): a flat mesh that is not a regular grid.
+inline Mesh jittered_grid(int rows, int cols, unsigned seed)
+{
+  Mesh tm = grid(rows, cols);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-0.15, 0.15);
+  for(auto v : vertices(tm))
+    if(!CGAL::is_border(v, tm))
+      tm.point(v) = tm.point(v) + Vector(d(rng), d(rng), 0);
+  return tm;
+}
+
 // Partial constraints along the sharp edges of `tm` (dihedral angle above
 // `degrees`): each face of such an edge gets the direction of its sharpest
 // one or two edges, as the command-line program's --sharp-edges does.

@@ -8,13 +8,16 @@
 // Stages and end-to-end time of a sign-symmetric 4-PolyVector design (frame
 // field) with 1% of the faces under hard constraints, over bumpy.off after
 // 1..max_level() Loop subdivisions (10k, 40k, 160k, 640k, 2.5M faces), with
-// each available sparse solver; plus the root kernel and the singularities.
+// each available sparse solver (and the package's default, which picks between
+// the direct solver and multigrid by size); plus the root kernel and the
+// singularities.
 // The argument of every size-dependent benchmark is the subdivision level;
 // the counter `faces` gives the size.
 
 #include "pvf_benchmark_common.h"
 
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
 
@@ -87,10 +90,15 @@ BENCHMARK_TEMPLATE(BM_design, PVF::Simplicial_ldlt_solver, CGAL::Parallel_tag)->
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 BENCHMARK_TEMPLATE(BM_design, PVF::Cholmod_sparse_solver, CGAL::Sequential_tag)->Name("BM_design/CHOLMOD")->Apply(level_arguments);
 #ifdef CGAL_LINKED_WITH_TBB
-BENCHMARK_TEMPLATE(BM_design, PVF::Cholmod_sparse_solver, CGAL::Parallel_tag)->Name("BM_design/CHOLMOD_parallel")->Apply(all_level_arguments);
+BENCHMARK_TEMPLATE(BM_design, PVF::Cholmod_sparse_solver, CGAL::Parallel_tag)->Name("BM_design/CHOLMOD_parallel")->Apply(level_arguments);
 #endif
 BENCHMARK_TEMPLATE(BM_design, Cholmod_metis_solver, CGAL::Sequential_tag)->Name("BM_design/CHOLMOD_METIS")->Apply(level_arguments);
 #endif
+// Multigrid-preconditioned conjugate gradient at every size, and the package's
+// default (direct below 50,000 unknowns, multigrid above) at every size up to
+// PVF_BENCH_MAX_LEVEL (level 5: 2.56M faces).
+BENCHMARK_TEMPLATE(BM_design, PVF::Amg_sparse_solver, CGAL::Parallel_if_available_tag)->Name("BM_design/AMG_parallel")->Apply(level_arguments);
+BENCHMARK_TEMPLATE(BM_design, PVF::Default_sparse_solver, CGAL::Parallel_if_available_tag)->Name("BM_design/default")->Apply(all_level_arguments);
 
 // New constraint values on the same faces: the factorization is reused, so
 // this is the cost of the triangular solves (and the right-hand sides).

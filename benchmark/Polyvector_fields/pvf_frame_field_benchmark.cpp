@@ -21,6 +21,7 @@
 #include "pvf_benchmark_common.h"
 
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/IO/constraints.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
@@ -124,6 +125,10 @@ BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Simplicial_ldlt_solver)
 BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Cholmod_sparse_solver)
   ->Name("BM_conjugate_per_iteration/CHOLMOD")->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 #endif
+BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Amg_sparse_solver)
+  ->Name("BM_conjugate_per_iteration/AMG")->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_TEMPLATE(BM_conjugate_per_iteration, PVF::Default_sparse_solver)
+  ->Name("BM_conjugate_per_iteration/default")->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 template <typename Solver>
 void BM_angle_bound_bumpy(benchmark::State& state)

@@ -7,10 +7,12 @@
 
 // Peak memory of one end-to-end design, measured in a process of its own:
 //
-//   pvf_peak_memory LEVEL [ldlt|cg|cholmod|cholmod-metis] [parallel|sequential]
+//   pvf_peak_memory LEVEL [ldlt|cg|cholmod|cholmod-metis|amg|default] [parallel|sequential]
 //
 // (default: ldlt, parallel; parallel means CGAL::Parallel_if_available_tag)
-// (cg and cholmod-metis are proposals measured here, not solvers of the package;
+// (amg: Amg_sparse_solver; default: Default_sparse_solver, direct below 50,000
+// unknowns and multigrid above; cg and cholmod-metis are proposals measured
+// here, not solvers of the package;
 // cg also prints the relative difference of its field to the SimplicialLDLT one)
 //
 // generates bumpy.off after LEVEL Loop subdivisions and the 1% constraints,
@@ -27,6 +29,7 @@
 #include "pvf_benchmark_common.h"
 
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 
 #include <cstring>
 
@@ -35,7 +38,7 @@ int main(int argc, char** argv)
   using namespace pvf_bench;
   if(argc < 2)
   {
-    std::cerr << "usage: " << argv[0] << " LEVEL [ldlt|cg|cholmod|cholmod-metis] [parallel|sequential]\n";
+    std::cerr << "usage: " << argv[0] << " LEVEL [ldlt|cg|cholmod|cholmod-metis|amg|default] [parallel|sequential]\n";
     return EXIT_FAILURE;
   }
   const int level = std::atoi(argv[1]);
@@ -48,13 +51,14 @@ int main(int argc, char** argv)
   }
   const bool sequential = (mode == "sequential");
 #ifndef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
-  if(solver != "ldlt" && solver != "cg")
+  if(solver == "cholmod" || solver == "cholmod-metis")
   {
     std::cerr << "CHOLMOD is not available in this build\n";
     return EXIT_FAILURE;
   }
 #endif
-  if(solver != "ldlt" && solver != "cg" && solver != "cholmod" && solver != "cholmod-metis")
+  if(solver != "ldlt" && solver != "cg" && solver != "cholmod" && solver != "cholmod-metis" && solver != "amg" &&
+     solver != "default")
   {
     std::cerr << "unknown solver " << solver << "\n";
     return EXIT_FAILURE;
@@ -73,7 +77,33 @@ int main(int argc, char** argv)
                    : design_end_to_end<Cholmod_metis_solver>(tm, constraints);
   else
 #endif
-  if(solver == "cg")
+  if(solver == "amg")
+  {
+    // Also reports the largest coefficient difference to the direct solver's
+    // field, relative to its largest coefficient (the peak is read before the
+    // direct solve).
+    std::vector<Complex> iterative, direct;
+    t = sequential ? design_end_to_end<CGAL::Polyvector_fields::Amg_sparse_solver, CGAL::Sequential_tag>(tm, constraints, &iterative)
+                   : design_end_to_end<CGAL::Polyvector_fields::Amg_sparse_solver>(tm, constraints, &iterative);
+    const long peak = status_kb("VmHWM");
+    design_end_to_end<CGAL::Polyvector_fields::Direct_sparse_solver>(tm, constraints, &direct);
+    double diff = 0, size = 0;
+    for(std::size_t i = 0; i < direct.size(); ++i)
+    {
+      diff = (std::max)(diff, std::abs(direct[i] - iterative[i]));
+      size = (std::max)(size, std::abs(direct[i]));
+    }
+    std::cout << "solver=amg mode=" << mode << " level=" << level << " faces=" << t.faces << " seconds=" << t.total
+              << " connection_s=" << t.connection << " assembly_s=" << t.assembly
+              << " factorization_s=" << t.factorization << " solve_s=" << t.solve << " roots_s=" << t.roots
+              << " mesh_rss_kb=" << before << " peak_kb=" << peak << " design_peak_kb=" << (peak - before)
+              << " hwm_reset=" << (reset ? 1 : 0) << " relative_difference_to_direct=" << diff / size << std::endl;
+    return EXIT_SUCCESS;
+  }
+  else if(solver == "default")
+    t = sequential ? design_end_to_end<CGAL::Polyvector_fields::Default_sparse_solver, CGAL::Sequential_tag>(tm, constraints)
+                   : design_end_to_end<CGAL::Polyvector_fields::Default_sparse_solver>(tm, constraints);
+  else if(solver == "cg")
   {
     // Also reports the largest coefficient difference to the direct solver's field.
     std::vector<Complex> iterative, direct;

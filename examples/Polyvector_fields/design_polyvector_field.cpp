@@ -37,6 +37,7 @@
 #include <CGAL/Polyvector_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Polyvector_fields/IO/singularities.h>
 #include <CGAL/Polyvector_fields/IO/vtk.h>
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
@@ -65,6 +66,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <random>
@@ -116,6 +118,10 @@ const char* usage =
   "  --smoothness-weights uniform|harmonic  weight of each edge in the smoothness energy: 1 (the\n"
   "                           paper's, default) or 3|e|^2/(A_f+A_g), which follows the geometry, not\n"
   "                           the density of the triangulation\n"
+  "  --solver auto|direct|amg the sparse solver: 'direct' (CHOLMOD when found, else Eigen's\n"
+  "                           SimplicialLDLT), 'amg' (conjugate gradient with multigrid, linear\n"
+  "                           time, fields within 1e-8 of the direct solver's), or 'auto' (default):\n"
+  "                           direct below 8,000 unknowns per system, multigrid above\n"
   "constraints (face ids are 0-based positions in the mesh file):\n"
   "  --constraints FILE       constraint file: 'face_id x y z [x y z ...]' per line, '#' comments\n"
   "  --dmat-b FILE --dmat-bc FILE   libigl constraints: face ids (b) and vectors (bc)\n"
@@ -168,6 +174,7 @@ struct Options
   std::size_t degree = 4;
   bool sign_symmetric = false;
   PVF::Smoothness_weights weights = PVF::Smoothness_weights::UNIFORM;
+  std::size_t amg_threshold = PVF::Default_sparse_solver::default_amg_threshold;  // --solver
   std::string constraints, dmat_b, dmat_bc;
   double soft_weight = 0;  // 0: hard
   double sharp_degrees = -1;  // < 0: no sharp-edge constraints
@@ -315,6 +322,14 @@ Options parse_options(int argc, char** argv)
       else if(kind == "harmonic") o.weights = PVF::Smoothness_weights::HARMONIC;
       else throw Failure("--smoothness-weights expects 'uniform' or 'harmonic', not '" + kind + "'", 2);
     }
+    else if(flag == "--solver")
+    {
+      const std::string kind = line.text();
+      if(kind == "auto") o.amg_threshold = PVF::Default_sparse_solver::default_amg_threshold;
+      else if(kind == "direct") o.amg_threshold = std::numeric_limits<std::size_t>::max();
+      else if(kind == "amg") o.amg_threshold = 0;
+      else throw Failure("--solver expects 'auto', 'direct' or 'amg', not '" + kind + "'", 2);
+    }
     else if(flag == "--out-field") o.out_field = line.text();
     else if(flag == "--out-singularities") o.out_singularities = line.text();
     else if(flag == "--out-vtk") o.out_vtk = line.text();
@@ -404,6 +419,67 @@ void check(PVF::Error_code code, const std::string& what, const std::string& det
 // ---------------------------------------------------------------------------
 // Stage 2: the outputs, checked before any work, written all or none.
 // ---------------------------------------------------------------------------
+// An output stream buffer on a C file, for the temporary files of
+// Output_files: "wbx" (refuse an existing file) has no iostream equivalent.
+class File_buffer : public std::streambuf
+{
+public:
+  explicit File_buffer(std::FILE* file) : m_file(file), m_buffer(std::size_t(1) << 20)
+  {
+    setp(m_buffer.data(), m_buffer.data() + m_buffer.size());
+  }
+  ~File_buffer() override { close(); }
+
+  // Writes what is buffered and closes the file; false if any write failed.
+  bool close()
+  {
+    if(m_file == nullptr)
+      return m_ok;
+    drain();
+    m_ok = (std::fflush(m_file) == 0) && m_ok;
+    m_ok = (std::fclose(m_file) == 0) && m_ok;
+    m_file = nullptr;
+    return m_ok;
+  }
+
+protected:
+  int_type overflow(int_type c) override
+  {
+    if(!drain())
+      return traits_type::eof();
+    if(!traits_type::eq_int_type(c, traits_type::eof()))
+    {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  std::streamsize xsputn(const char* data, std::streamsize n) override
+  {
+    if(n < std::streamsize(m_buffer.size()))
+      return std::streambuf::xsputn(data, n);
+    // A large block (a whole formatted file): straight to the file.
+    if(!drain() || std::fwrite(data, 1, std::size_t(n), m_file) != std::size_t(n))
+      return m_ok = false, 0;
+    return n;
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+private:
+  bool drain()
+  {
+    const std::size_t n = std::size_t(pptr() - pbase());
+    if(m_file == nullptr || (n > 0 && std::fwrite(pbase(), 1, n, m_file) != n))
+      m_ok = false;
+    setp(m_buffer.data(), m_buffer.data() + m_buffer.size());
+    return m_ok;
+  }
+
+  std::FILE* m_file;
+  std::vector<char> m_buffer;
+  bool m_ok = true;
+};
+
 class Output_files
 {
 public:
@@ -448,35 +524,46 @@ public:
     }
   }
 
-  // Keeps the content of `path` until publish().
-  void set(const std::string& path, std::string content) { m_contents[path] = std::move(content); }
-
-  // Writes every content to a temporary file beside its destination, then
-  // renames them all into place. If any step fails, the destinations are as
-  // they were before (replaced files are restored) and no temporary remains.
-  void publish(bool create_default_folder)
+  // Creates the default folder output/ if the outputs go there by default.
+  void prepare(bool create_default_folder)
   {
-    if(create_default_folder)
-    {
-      std::error_code ec;
-      fs::create_directories("output", ec);
-      if(ec)
-        throw Failure("cannot create the folder output/: " + ec.message());
-    }
+    if(!create_default_folder)
+      return;
+    std::error_code ec;
+    fs::create_directories("output", ec);
+    if(ec)
+      throw Failure("cannot create the folder output/: " + ec.message());
+  }
+
+  // Writes the content of `path` through `write` (which returns an
+  // Error_code) into a fresh temporary file beside it, streamed: no copy of a
+  // large output is kept in memory. publish() renames them all into place.
+  template <typename Write>
+  void write(const std::string& path, const Write& write, const std::string& what)
+  {
+    const std::string temporary = sibling(path, ".tmp-");
+    std::FILE* file = std::fopen(temporary.c_str(), "wbx");
+    if(file == nullptr)
+      throw Failure("cannot write '" + path + "': " + std::strerror(errno));
+    m_temporaries[path] = temporary;
+    File_buffer buffer(file);
+    std::ostream stream(&buffer);
+    const PVF::Error_code code = write(stream);
+    stream.flush();
+    const bool ok = buffer.close() && bool(stream);
+    check(code, "writing " + what);
+    if(!ok)
+      throw Failure("cannot write '" + path + "': " + std::strerror(errno));
+  }
+
+  // Renames every temporary file over its destination. If any step fails,
+  // the destinations are as they were before (replaced files are restored)
+  // and no temporary remains.
+  void publish()
+  {
     for(const std::string& path : m_destinations)
-    {
-      const std::string temporary = sibling(path, ".tmp-");
-      std::FILE* file = std::fopen(temporary.c_str(), "wbx");
-      if(file == nullptr)
-        throw Failure("cannot write '" + path + "': " + std::strerror(errno));
-      m_temporaries.push_back(temporary);
-      const std::string& content = m_contents[path];
-      bool ok = content.empty() || std::fwrite(content.data(), 1, content.size(), file) == content.size();
-      ok = (std::fflush(file) == 0) && ok;
-      ok = (std::fclose(file) == 0) && ok;
-      if(!ok)
-        throw Failure("cannot write '" + path + "': " + std::strerror(errno));
-    }
+      if(m_temporaries.count(path) == 0)
+        throw Failure("internal error: '" + path + "' was not written");
     // Existing destinations are moved aside first, so that they can be restored.
     std::vector<std::pair<std::string, std::string> > backups;  // destination, backup
     std::vector<std::string> placed;
@@ -502,7 +589,7 @@ public:
         }
         backups.emplace_back(path, backup);
       }
-      fs::rename(m_temporaries[i], path, ec);
+      fs::rename(m_temporaries.at(path), path, ec);
       if(ec)
       {
         undo();
@@ -519,8 +606,8 @@ public:
   ~Output_files()
   {
     std::error_code ec;
-    for(const std::string& t : m_temporaries)
-      fs::remove(t, ec);
+    for(const auto& t : m_temporaries)
+      fs::remove(t.second, ec);
   }
 
   const std::vector<std::string>& destinations() const { return m_destinations; }
@@ -543,8 +630,7 @@ private:
   }
 
   std::vector<std::string> m_destinations;
-  std::map<std::string, std::string> m_contents;
-  std::vector<std::string> m_temporaries;
+  std::map<std::string, std::string> m_temporaries;  // destination -> its temporary file
 };
 
 struct Stopwatch
@@ -786,6 +872,7 @@ struct Field
 {
   Coefficient_map coefficients;
   PVF::Design_statistics statistics;
+  PVF::Default_sparse_solver solver;  // its multigrid statistics cover every stage
   std::size_t components = 0;
   std::size_t full = 0, partial = 0;
   double smooth_energy = 0;
@@ -823,8 +910,11 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
                    Curvature& curvature, Stopwatch& clock)
 {
   Field field;
+  field.solver.set_amg_threshold(o.amg_threshold);
   PVF::Polyvector_field_designer<Mesh> designer(
-    bundle, o.degree, PVF::parameters::sign_symmetric(o.sign_symmetric, PVF::parameters::smoothness_weights(o.weights)));
+    bundle, o.degree,
+    PVF::parameters::sign_symmetric(o.sign_symmetric, PVF::parameters::smoothness_weights(
+                                                        o.weights, CGAL::parameters::sparse_linear_solver(field.solver))));
   check(designer.status(), "degree");
   field.components = bundle.number_of_components();
   for(const Constraint& c : constraints.list)
@@ -843,7 +933,11 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
               ": each length L needs 1e-100 <= (L / sigma)^N <= 1e100, sigma their geometric mean");
   clock.lap("design");
   field.statistics = designer.statistics();
-  field.smooth_energy = PVF::smoothness_energy(bundle, o.degree, field.coefficients, PVF::parameters::smoothness_weights(o.weights));
+  // The energy before an optimisation (the summary gives both); without one,
+  // analyse_field() measures the field once.
+  if(o.angle_bound_degrees > 0 || o.conjugate)
+    field.smooth_energy = PVF::smoothness_energy(bundle, o.degree, field.coefficients,
+                                                 PVF::parameters::smoothness_weights(o.weights));
 
   std::ostringstream report;
   if(o.angle_bound_degrees > 0)
@@ -852,7 +946,8 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
     const double tolerance = (o.tolerance > 0 ? o.tolerance : 0.5) * CGAL_PI / 180;  // the library's default: 0.5 degree
     const auto np = PVF::parameters::angle_bound(
       o.angle_bound_degrees * CGAL_PI / 180,
-      PVF::parameters::tolerance(tolerance, PVF::parameters::smoothness_weights(o.weights)));
+      PVF::parameters::tolerance(tolerance, PVF::parameters::smoothness_weights(
+                                              o.weights, CGAL::parameters::sparse_linear_solver(field.solver))));
     check(o.iterations ? PVF::design_angle_bounded_frame_field(bundle, constraints.list, field.coefficients, result,
                                                                 np.number_of_iterations(o.iterations))
                        : PVF::design_angle_bounded_frame_field(bundle, constraints.list, field.coefficients, result, np),
@@ -882,7 +977,8 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
                                                               P::smoothness_weights(
                                                                 o.weights, CGAL::parameters::number_of_iterations(
                                                                              o.iterations ? o.iterations
-                                                                                          : defaults.iterations)))))));
+                                                                                          : defaults.iterations)
+                                                                             .sparse_linear_solver(field.solver)))))));
     check(PVF::design_conjugate_frame_field(bundle, constraints.list, field.coefficients, result, np), "conjugate field");
     report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
            << " iterations (orthogonality weight " << o.orthogonality << ", last lambda " << result.final_lambda
@@ -1035,57 +1131,83 @@ void make_quad_mesh(const Options& o, const Mesh& tm, const Parametrization& par
 void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& constraints, const Analysis& a,
                    const Parametrization& param, const Quad_stage& q, Output_files& outputs, Stopwatch& clock)
 {
-  auto to_string = [](auto&& write, const std::string& what) {
-    std::ostringstream s;
-    check(write(s), "writing " + what);
-    return s.str();
-  };
+  outputs.prepare(o.default_outputs);
   if(!o.out_field.empty())
-    outputs.set(o.out_field, to_string([&](std::ostream& s) { return PVF::IO::write_rawfield(s, tm, a.roots, o.degree); },
-                                       o.out_field));
+    outputs.write(o.out_field, [&](std::ostream& s) { return PVF::IO::write_rawfield(s, tm, a.roots, o.degree); },
+                  o.out_field);
   if(!o.out_singularities.empty())
-    outputs.set(o.out_singularities,
-                to_string([&](std::ostream& s) { return PVF::IO::write_singularities(s, tm, o.degree, a.singularities); },
-                          o.out_singularities));
+    outputs.write(o.out_singularities,
+                  [&](std::ostream& s) { return PVF::IO::write_singularities(s, tm, o.degree, a.singularities); },
+                  o.out_singularities);
   if(!o.out_vtk.empty())
   {
     std::vector<Face> constrained;
     for(const Constraint& c : constraints.list)
       constrained.push_back(c.face);
-    outputs.set(o.out_vtk, to_string([&](std::ostream& s) {
-                  return PVF::IO::write_vtk(s, tm, a.roots, o.degree, a.singularities,
-                                            PVF::parameters::face_scalars(a.face_arrays, PVF::parameters::constrained_faces(constrained)));
-                }, o.out_vtk));
+    outputs.write(o.out_vtk, [&](std::ostream& s) {
+                    return PVF::IO::write_vtk(s, tm, a.roots, o.degree, a.singularities,
+                                              PVF::parameters::face_scalars(a.face_arrays, PVF::parameters::constrained_faces(constrained)));
+                  }, o.out_vtk);
   }
+  // CGAL's writers say only whether they succeeded.
+  auto cgal_writer = [](bool written) { return written ? PVF::Error_code::SUCCESS : PVF::Error_code::CANNOT_OPEN_FILE; };
   if(!o.out_mesh.empty())
-  {
-    std::ostringstream s;
-    if(!CGAL::IO::write_OFF(s, tm, CGAL::parameters::stream_precision(17)))
-      throw Failure("writing " + o.out_mesh + ": cannot write the mesh");
-    outputs.set(o.out_mesh, s.str());
-  }
+    outputs.write(o.out_mesh, [&](std::ostream& s) {
+                    return cgal_writer(CGAL::IO::write_OFF(s, tm, CGAL::parameters::stream_precision(17)));
+                  }, o.out_mesh + " (the mesh)");
   if(!o.out_param.empty())
-    outputs.set(o.out_param, to_string([&](std::ostream& s) { return PVF::IO::write_integer_grid_map_OBJ(s, tm, param.uv); },
-                                       o.out_param));
+    outputs.write(o.out_param, [&](std::ostream& s) { return PVF::IO::write_integer_grid_map_OBJ(s, tm, param.uv); },
+                  o.out_param);
   if(!o.out_quads.empty())
   {
-    std::ostringstream s;
     const bool obj = fs::path(o.out_quads).extension() == ".obj";
-    if(!(obj ? CGAL::IO::write_OBJ(s, q.quads, CGAL::parameters::stream_precision(17))
-             : CGAL::IO::write_OFF(s, q.quads, CGAL::parameters::stream_precision(17))))
-      throw Failure("writing " + o.out_quads + ": cannot write the quad mesh");
-    outputs.set(o.out_quads, s.str());
+    outputs.write(o.out_quads, [&](std::ostream& s) {
+                    return cgal_writer(obj ? CGAL::IO::write_OBJ(s, q.quads, CGAL::parameters::stream_precision(17))
+                                           : CGAL::IO::write_OFF(s, q.quads, CGAL::parameters::stream_precision(17)));
+                  }, o.out_quads + " (the quad mesh)");
   }
   if(!o.out_quads_vtk.empty())
-    outputs.set(o.out_quads_vtk, to_string([&](std::ostream& s) { return PVF::IO::write_quad_mesh_VTK(s, q.quads); },
-                                           o.out_quads_vtk));
-  outputs.publish(o.default_outputs);
+    outputs.write(o.out_quads_vtk, [&](std::ostream& s) { return PVF::IO::write_quad_mesh_VTK(s, q.quads); },
+                  o.out_quads_vtk);
+  outputs.publish();
   clock.lap("write");
 }
 
 // ---------------------------------------------------------------------------
 // Stage 10: the summary.
 // ---------------------------------------------------------------------------
+// Which solver solved the systems, and what multigrid did when it was used.
+std::string solver_report(const PVF::Default_sparse_solver& solver)
+{
+#ifdef CGAL_PVF_HAS_CHOLMOD
+  const char* direct = "direct (CHOLMOD)";
+#else
+  const char* direct = "direct (Eigen SimplicialLDLT)";
+#endif
+  const PVF::Amg_statistics s = solver.amg_solver().statistics();
+  std::ostringstream m;
+  if(s.solves == 0)
+  {
+    m << direct;
+    if(solver.amg_threshold() != std::numeric_limits<std::size_t>::max())
+      m << " (systems of fewer than " << solver.amg_threshold() << " unknowns)";
+    return m.str();
+  }
+  m << "multigrid-preconditioned conjugate gradient: " << s.level_sizes.size() << " levels (";
+  for(std::size_t l = 0; l < s.level_sizes.size(); ++l)
+    m << (l ? ", " : "") << s.level_sizes[l];
+  m << " unknowns), " << s.solves << " solves, " << s.iterations << " iterations (at most " << s.max_iterations
+    << "), residual at most " << s.max_residual << ", " << s.setups << " setups";
+  if(s.reused_setups)
+    m << " and " << s.reused_setups << " refactorizations on kept coarse levels";
+  m << " (time summed over the systems: structure " << std::fixed << std::setprecision(3) << s.analysis_seconds
+    << " s, setups " << s.setup_seconds << " s, solves " << s.solve_seconds << " s)";
+  m.unsetf(std::ios::fixed);
+  if(s.fallbacks)
+    m << "; " << s.fallbacks << " solves did not converge and were finished by the direct solver";
+  return m.str();
+}
+
 void print_summary(const Options& o, const Input_mesh& input, const Constraint_set& constraints, const Field& field,
                    const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
                    const Stopwatch& clock)
@@ -1140,6 +1262,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Constraint_s
     std::cout << "hard\n";
   if(!constraints.note.empty())
     std::cout << "note            " << constraints.note << "\n";
+  std::cout << "solver          " << solver_report(field.solver) << "\n";
   std::cout << "energy          " << a.energy << " (smoothness, Eq. 6"
             << (o.weights == PVF::Smoothness_weights::HARMONIC ? ", harmonic weights)" : ")");
   if(o.angle_bound_degrees > 0 || o.conjugate)

@@ -99,6 +99,12 @@ elseif(CASE STREQUAL "success_bumpy")
   file(WRITE "${constraints}" "# face x y z ...\n0 1 0 0 0 1 0\n1261 0 1 0\n")
   set(args --mesh "${bumpy}" --degree 4 --sign-symmetric --constraints "${constraints}")
   set(expect_success TRUE)
+elseif(CASE STREQUAL "amg_bumpy")
+  # The multigrid solver asked for on a mesh the default would give the
+  # direct solver: it runs, converges, and says so.
+  set(args --mesh "${bumpy}" --sign-symmetric --random-constraints 25 --solver amg)
+  set(expect_success TRUE)
+  set(expect_stdout "solver          multigrid-preconditioned conjugate gradient: ")
 elseif(CASE STREQUAL "parametrize_bumpy")
   # A frame field from 1% curvature constraints and the integer-grid map it
   # guides, written as OBJ with one texture coordinate per corner.

@@ -21,9 +21,13 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <string>
@@ -349,4 +353,126 @@ TEST(MeshInput, PolygonTriangulationIsExactOrRefused)
   const Read big = read_text("huge.off", "OFF\n4 1 0\n1e19 0 0\n1e19 1 0\n0 1e19 0\n0 0 0\n4 0 1 2 3\n", true);
   EXPECT_EQ(big.code, PVF::Error_code::DEGENERATE_FACE);
   EXPECT_NE(big.message.find("face 0 (line 7)"), std::string::npos) << big.message;
+}
+
+// ---------------------------------------------------------------------------
+// The linear-time reader: the same numbers, faces, lines and messages.
+// ---------------------------------------------------------------------------
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+} // namespace
+
+TEST(MeshInputFast, OffTokensReadAsStrtodReadsThem)
+{
+  namespace I = PVF::IO::internal;
+  // Exponents, '+' signs, -0, CRLF, tabs, comments, a blank line, extra
+  // numbers per vertex, subnormals, and no newline at the end.
+  const std::string text = "# header comment\r\nOFF\t5 2 0\r\n"
+                           "1.5e+2 +3.25 -0.0 # trailing comment\r\n"
+                           "\t.5 1E-3\t  7 0.1 0.2\n"
+                           "\n   # a comment line\n"
+                           "1e308 -2.2250738585072014e-308 4.9406564584124654e-324\n"
+                           "0.1000000000000000055511151231257827 3. +0\n"
+                           "123456789012345678901234567890 -1e-400 2.5e-1\n"
+                           "3 0 1 2\r\n"
+                           "4\t+0 2 3 4 # x";
+  const char* tokens[5][3] = { { "1.5e+2", "3.25", "-0.0" },
+                               { ".5", "1E-3", "7" },
+                               { "1e308", "-2.2250738585072014e-308", "4.9406564584124654e-324" },
+                               { "0.1000000000000000055511151231257827", "3.", "0" },
+                               { "123456789012345678901234567890", "-0.0", "2.5e-1" } };
+  I::Polygon_soup soup;
+  std::string message;
+  ASSERT_EQ(I::read_off_soup(text, soup, I::Diagnostic(&message)), PVF::Error_code::SUCCESS) << message;
+  ASSERT_EQ(soup.points.size(), 5u);
+  for(std::size_t v = 0; v < 5; ++v)
+    for(int c = 0; c < 3; ++c)
+      EXPECT_TRUE(same_bits(soup.points[v][c], std::strtod(tokens[v][c], nullptr)))
+        << "vertex " << v << " coordinate " << c << ": " << soup.points[v][c];
+  EXPECT_EQ(soup.point_line, (std::vector<std::size_t>{ 3, 4, 7, 8, 9 }));
+  EXPECT_EQ(soup.first, (std::vector<std::size_t>{ 0, 3, 7 }));
+  EXPECT_EQ(soup.ids, (std::vector<std::size_t>{ 0, 1, 2, 0, 2, 3, 4 }));
+  EXPECT_EQ(soup.polygon_line, (std::vector<std::size_t>{ 10, 11 }));
+
+  // The same file with one bad token: the reader stops there, with its line.
+  std::string bad = text;
+  bad.replace(bad.find("1E-3"), 4, "1E-3x");
+  EXPECT_EQ(I::read_off_soup(bad, soup, I::Diagnostic(&message)), PVF::Error_code::MALFORMED_FILE);
+  EXPECT_EQ(message, "line 4: vertex 1: '1E-3x' is not a number");
+  bad = text;
+  bad.replace(bad.find("4\t+0"), 4, "4\t+9");
+  EXPECT_EQ(I::read_off_soup(bad, soup, I::Diagnostic(&message)), PVF::Error_code::MALFORMED_FILE);
+  EXPECT_EQ(message, "line 11: face 1 uses vertex +9, not in 0..4");
+}
+
+TEST(MeshInputFast, BundledMeshesReadAsCgalReadsThem)
+{
+  namespace I = PVF::IO::internal;
+  for(const char* name : { "bumpy.off", "fandisk.off", "eight.off", "lilium.obj" })
+  {
+    const std::string path = std::string(PVF_DATA_DIR) + "/" + name;
+    I::Polygon_soup soup;
+    std::string message;
+    ASSERT_EQ(I::read_polygon_soup_file(path, std::size_t(1) << 30, soup, I::Diagnostic(&message)),
+              PVF::Error_code::SUCCESS)
+      << name << ": " << message;
+    std::vector<Kernel::Point_3> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(path, points, polygons)) << name;
+    ASSERT_EQ(soup.points.size(), points.size()) << name;
+    ASSERT_EQ(soup.number_of_polygons(), polygons.size()) << name;
+    std::size_t different = 0;
+    for(std::size_t v = 0; v < points.size(); ++v)
+      for(int c = 0; c < 3; ++c)
+        different += same_bits(soup.points[v][c], points[v][c]) ? 0 : 1;
+    EXPECT_EQ(different, 0u) << name;
+    for(std::size_t i = 0; i < polygons.size(); ++i)
+      ASSERT_EQ(std::vector<std::size_t>(soup.polygon(i), soup.polygon(i) + soup.size(i)), polygons[i])
+        << name << " face " << i;
+  }
+}
+
+TEST(MeshInputFast, LinearTimeChecksKeepTheirMessages)
+{
+  // A vertex shared by two fans of 3 triangles (the small-fan path), and by
+  // two fans of 10 (more than 16 corners: the sorted path).
+  for(std::size_t fan : { 3u, 10u })
+  {
+    std::string text = "OFF\n" + std::to_string(1 + 2 * (fan + 1)) + " " + std::to_string(2 * fan) + " 0\n0 0 0\n";
+    for(int side = 0; side < 2; ++side)
+      for(std::size_t k = 0; k <= fan; ++k)
+        text += std::to_string(std::cos(0.3 * double(k))) + " " + std::to_string(std::sin(0.3 * double(k))) + " " +
+                (side == 0 ? "1\n" : "-1\n");
+    for(int side = 0; side < 2; ++side)
+      for(std::size_t k = 0; k < fan; ++k)
+      {
+        const std::size_t a = 1 + side * (fan + 1) + k;
+        text += "3 0 " + std::to_string(a) + " " + std::to_string(a + 1) + "\n";
+      }
+    const Read r = read_text("pinched.off", text, false);
+    EXPECT_EQ(r.code, PVF::Error_code::NON_MANIFOLD_MESH);
+    EXPECT_EQ(r.message, "vertex 0 (line 3) is pinched: its faces form 2 separate fans") << fan;
+    const Read repaired = read_text("pinched.off", text, true);
+    EXPECT_EQ(repaired.code, PVF::Error_code::SUCCESS) << repaired.message;
+    EXPECT_EQ(repaired.report.split_vertices, 1u);
+  }
+  // An edge of three faces, reported with the three faces in file order.
+  const Read three = read_text("three.off",
+                               "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", false);
+  EXPECT_EQ(three.code, PVF::Error_code::NON_MANIFOLD_MESH);
+  EXPECT_EQ(three.message, "the edge between vertices 0 and 1 is shared by 3 faces (face 0 (line 8), face 1 (line 9), "
+                           "face 2 (line 10))");
+  // Duplicate polygons: a quad repeated in another rotation, among triangles.
+  const Read duplicate = read_text("duplicate.off",
+                                   "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n4 0 1 2 3\n3 0 1 4\n4 2 3 0 1\n", false);
+  EXPECT_EQ(duplicate.code, PVF::Error_code::NON_TRIANGLE_FACE);
+  const Read removed = read_text("duplicate.off",
+                                 "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n4 0 1 2 3\n3 0 1 4\n4 2 3 0 1\n", true);
+  EXPECT_EQ(removed.report.duplicate_faces, 1u) << removed.message;
+  const Read triangles = read_text("duplicate.off",
+                                   "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 2 0 1\n", false);
+  EXPECT_EQ(triangles.code, PVF::Error_code::DUPLICATE_FACE);
+  EXPECT_EQ(triangles.message, "face 2 (line 9) has the same vertices as face 0 (line 7)");
 }

@@ -22,8 +22,11 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <limits>
 #include <locale>
@@ -642,6 +645,140 @@ TEST(Singularities, SurfaceMeshWithRemovedVertices)
   std::vector<PVF::Singularity<vertex_descriptor> > out;
   std::size_t N = 0;
   EXPECT_EQ(PIO::read_singularities(is, tm, N, out), Error_code::MALFORMED_FILE);
+}
+
+// The chunked writer: the text of every number is the shortest to_chars()
+// text, also for the coordinates written by reuse of an earlier one (-x, and
+// the opposite vectors of a sign-symmetric field), and reads back exactly.
+// The .rawfield text of `roots` written number after number with plain
+// std::to_chars (shortest round trip): what the writers must give.
+template <typename Mesh, typename RootMap>
+std::string plain_rawfield_text(const Mesh& tm, RootMap roots, std::size_t N)
+{
+  std::string text = std::to_string(N) + " " + std::to_string(num_faces(tm)) + "\n";
+  for(auto f : faces(tm))
+  {
+    bool first = true;
+    for(const auto& u : get(roots, f))
+      for(double c : { u.x(), u.y(), u.z() })
+      {
+        char buffer[64];
+        text += first ? "" : " ";
+        text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, c).ptr);
+        first = false;
+      }
+    text += '\n';
+  }
+  return text;
+}
+
+// More faces than one batch of chunks (16 x 4096): the chunks formatted in
+// parallel give the bytes of the sequential writer, which are those of plain
+// to_chars, number after number.
+TEST(Rawfield, ParallelFormattingGivesTheSequentialBytes)
+{
+  typedef CGAL::Surface_mesh<SC::Point_3> Mesh;
+  typedef SC::Vector_3 Vector_3;
+  Mesh tm;
+  CGAL::make_grid(300, 120, tm, [](std::size_t i, std::size_t j) { return SC::Point_3(double(i), double(j), 0); }, true);
+  ASSERT_EQ(num_faces(tm), 72000u);
+  auto roots = get(CGAL::dynamic_face_property_t<std::vector<Vector_3> >(), tm);
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for(auto f : faces(tm))
+  {
+    const Vector_3 u(uniform(random), uniform(random), 0.0), v(uniform(random), uniform(random), -0.0);
+    put(roots, f, std::vector<Vector_3>{ u, v, -u, -v });
+  }
+  const auto face_ids = PIO::internal::face_list(tm);
+  std::string sequential, parallel;
+  std::size_t sequential_calls = 0;
+  ASSERT_TRUE(PIO::internal::format_rawfield<CGAL::Sequential_tag>(roots, 4, face_ids, [&](const char* d, std::size_t n) {
+    sequential.append(d, n);
+    ++sequential_calls;
+    return true;
+  }));
+  ASSERT_TRUE(PIO::internal::format_rawfield<CGAL::Parallel_if_available_tag>(roots, 4, face_ids,
+                                                                              [&](const char* d, std::size_t n) {
+                                                                                parallel.append(d, n);
+                                                                                return true;
+                                                                              }));
+  EXPECT_EQ(sequential_calls, 1u + (72000u + 4095u) / 4096u);  // the header, then one call per chunk
+  EXPECT_TRUE(parallel == sequential);
+  EXPECT_TRUE(sequential == plain_rawfield_text(tm, roots, 4));
+  // A sink that fails stops the writer.
+  std::size_t calls = 0;
+  EXPECT_FALSE(PIO::internal::format_rawfield<CGAL::Parallel_if_available_tag>(roots, 4, face_ids,
+                                                                               [&](const char*, std::size_t) {
+                                                                                 return ++calls < 3;
+                                                                               }));
+  EXPECT_EQ(calls, 3u);
+}
+
+TEST(Rawfield, ChunkedWriterGivesTheShortestTextOfEveryNumber)
+{
+  typedef CGAL::Surface_mesh<SC::Point_3> Mesh;
+  typedef SC::Vector_3 Vector_3;
+  const Mesh tm = load_mesh<Mesh>("bumpy.off");
+  auto written = get(CGAL::dynamic_face_property_t<std::vector<Vector_3> >(), tm);
+  auto read = get(CGAL::dynamic_face_property_t<std::vector<Vector_3> >(), tm);
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  const double specials[] = { 0.0, -0.0, 1e-320, -4.9406564584124654e-324, 1.7976931348623157e308, 0.1, -0.1,
+                              1e21, 1e-7, 123456.0 };
+  std::size_t i = 0;
+  for(auto f : faces(tm))
+  {
+    auto pick = [&]() { return (i++ % 3 == 0) ? specials[(i / 3) % 10] : uniform(random); };
+    const Vector_3 u(pick(), pick(), pick()), v(pick(), -pick(), pick());
+    put(written, f, std::vector<Vector_3>{ u, v, -u, -v, Vector_3(u.x(), -u.x(), v.z()) });
+  }
+  std::ostringstream os;
+  ASSERT_EQ(PIO::write_rawfield(os, tm, written, 5), Error_code::SUCCESS);
+  const std::string text = os.str();
+
+  const std::string expected = plain_rawfield_text(tm, written, 5);
+  EXPECT_EQ(text.size(), expected.size());
+  EXPECT_TRUE(text == expected);
+  EXPECT_NE(text.find(" -0 "), std::string::npos);
+
+  // More than the 1 MB of a chunk, to a file: the same bytes.
+  Scratch_directory dir("rawfield_chunks");
+  std::string large_expected;
+  {
+    std::ostringstream large;
+    auto many = get(CGAL::dynamic_face_property_t<std::vector<Vector_3> >(), tm);
+    for(auto f : faces(tm))
+    {
+      std::vector<Vector_3> roots;
+      for(int k = 0; k < 40; ++k)
+        roots.emplace_back(uniform(random), uniform(random), k % 2 ? -roots.back().x() : uniform(random));
+      put(many, f, roots);
+    }
+    ASSERT_EQ(PIO::write_rawfield(large, tm, many, 40), Error_code::SUCCESS);
+    large_expected = large.str();
+    EXPECT_GT(large_expected.size(), std::size_t(1) << 21);
+    ASSERT_EQ(PIO::write_rawfield(dir.file("large.rawfield"), tm, many, 40), Error_code::SUCCESS);
+    std::ifstream in(dir.file("large.rawfield"), std::ios::binary);
+    const std::string on_disk((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(on_disk == large_expected);
+    EXPECT_EQ(dir.entries(), std::set<std::string>{ "large.rawfield" });
+  }
+
+  // Bit-identical read back.
+  std::istringstream is(text);
+  std::size_t N = 0;
+  ASSERT_EQ(PIO::read_rawfield(is, tm, read, N), Error_code::SUCCESS);
+  ASSERT_EQ(N, 5u);
+  std::size_t different = 0;
+  for(auto f : faces(tm))
+    for(std::size_t k = 0; k < 5; ++k)
+      for(int c = 0; c < 3; ++c)
+      {
+        const double a = get(written, f)[k][c], b = get(read, f)[k][c];
+        different += std::memcmp(&a, &b, sizeof a) == 0 ? 0 : 1;
+      }
+  EXPECT_EQ(different, 0u);
 }
 
 } // namespace

@@ -9,17 +9,24 @@
 // CHOLMOD (Cholmod_sparse_solver), Eigen's SimplicialLDLT (Simplicial_ldlt_solver)
 // and a dense reference (Eigen's dense LDLT of the same matrix, through a
 // SparseLinearAlgebraWithFactorTraits_d model written here) agree to 1e-10
-// relative to the size of the field, on small meshes.
+// relative to the size of the field, on small meshes. The multigrid solver
+// (Amg_sparse_solver) agrees with them to 1e-8 (its documented accuracy), with
+// a coarsest level made small enough that these meshes get several levels, and
+// so does the size-adaptive default (Adaptive_sparse_solver).
 
+#include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
+#include <CGAL/Polyvector_fields/Amg_solver.h>
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/constraint_specification.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -33,7 +40,10 @@
 
 #include <cmath>
 #include <complex>
+#include <cstring>
+#include <fstream>
 #include <map>
+#include <string>
 #include <random>
 #include <type_traits>
 #include <vector>
@@ -328,20 +338,221 @@ TEST(SolverAgreement, RefactorWithNewWeightsMatchesFreshFactorization)
   check_refactor_matches_fresh_factorization<Dense_LDLT_traits>("dense");
 }
 
-// The default is CHOLMOD exactly when the program is linked with CHOLMOD
-// (asked of the dynamic linker, not of the macros that chose the default),
-// and Eigen's SimplicialLDLT otherwise.
-TEST(SolverAgreement, DefaultSolverIsCholmodWhenLinked)
+// The direct solver is CHOLMOD exactly when the program is linked with
+// CHOLMOD (asked of the dynamic linker, not of the macros that chose it), and
+// Eigen's SimplicialLDLT otherwise; the default adapts between it and multigrid.
+TEST(SolverAgreement, DirectSolverIsCholmodWhenLinked)
 {
+  EXPECT_TRUE((std::is_same<PVF::Default_sparse_solver, PVF::Adaptive_sparse_solver<PVF::Direct_sparse_solver> >::value));
 #if defined(__unix__) || defined(__APPLE__)
   const bool linked = dlsym(RTLD_DEFAULT, "cholmod_analyze") != nullptr;
-  EXPECT_EQ((std::is_same<PVF::Default_sparse_solver, PVF::Simplicial_ldlt_solver>::value), !linked);
+  EXPECT_EQ((std::is_same<PVF::Direct_sparse_solver, PVF::Simplicial_ldlt_solver>::value), !linked);
 #  ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
-  EXPECT_EQ((std::is_same<PVF::Default_sparse_solver, PVF::Cholmod_sparse_solver>::value), linked);
+  EXPECT_EQ((std::is_same<PVF::Direct_sparse_solver, PVF::Cholmod_sparse_solver>::value), linked);
 #  endif
 #else
   GTEST_SKIP() << "no dlsym";
 #endif
+}
+
+// ---------------------------------------------------------------------------
+// Multigrid-preconditioned conjugate gradient.
+// ---------------------------------------------------------------------------
+
+// A multigrid solver whose coarsest level is small enough for the meshes of
+// these tests (320 and 240 faces) to get three or four levels.
+PVF::Amg_sparse_solver small_amg(int reuse = 2, bool warm_start = true, int max_iterations = 200)
+{
+  PVF::Amg_sparse_solver amg;
+  amg.parameters().coarsest_size = 8;
+  amg.parameters().reuse = reuse;
+  amg.parameters().warm_start = warm_start;
+  amg.parameters().max_iterations = max_iterations;
+  return amg;
+}
+
+template <typename Solver, typename ConcurrencyTag = CGAL::Sequential_tag>
+std::vector<Complex> design_with(const Mesh& tm, std::size_t N, bool sign_symmetric,
+                                 const std::vector<Constraint>& constraints, const Solver& solver)
+{
+  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver, ConcurrencyTag> designer(
+    tm, N, PVF::parameters::sign_symmetric(sign_symmetric, CGAL::parameters::sparse_linear_solver(solver)));
+  EXPECT_EQ(designer.add_constraints(constraints), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
+  return designer.coefficient_array();
+}
+
+// Every case: decoupled degrees, partial constraints (one coupled block of
+// two unknowns per free face, the null-space parametrisation), N = 3 and 6.
+TEST(SolverAgreement, AmgMatchesSimplicialLDLT)
+{
+  for(const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const Mesh tm = c.closed ? closed_mesh() : open_mesh();
+    const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
+    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const PVF::Amg_sparse_solver amg = small_amg();
+    const auto a = design_with(tm, c.N, c.sign_symmetric, constraints, amg);
+    EXPECT_LT(relative_difference(ldlt, a), 1e-8);
+    const PVF::Amg_statistics s = amg.statistics();
+    EXPECT_GE(s.level_sizes.size(), 3u);  // real multigrid, not the dense coarsest level alone
+    EXPECT_GT(s.solves, 0u);
+    EXPECT_EQ(s.fallbacks, 0u);
+    EXPECT_LE(s.max_residual, amg.parameters().tolerance);
+    EXPECT_LE(s.max_iterations, 40u);
+  }
+}
+
+// A mesh the default settings coarsen (bumpy after one Loop subdivision, 9984
+// faces): the default tolerance keeps the field within 1e-8 of the direct
+// solver's, in 15 to 25 iterations; degrees in parallel give the same bits.
+TEST(SolverAgreement, AmgDefaultsOnTenThousandFaces)
+{
+  Mesh tm;
+  {
+    std::ifstream in(std::string(PVF_DATA_DIR) + "/bumpy.off");
+    ASSERT_TRUE(CGAL::IO::read_OFF(in, tm));
+  }
+  CGAL::Subdivision_method_3::Loop_subdivision(tm, CGAL::parameters::number_of_iterations(1));
+  ASSERT_EQ(tm.number_of_faces(), 9984u);
+  const auto constraints = constraints_for(tm, 4, true, 100, 30);  // partial: one coupled block
+  const auto full = constraints_for(tm, 4, true, 100);
+  for(const auto* set : { &full, &constraints })
+  {
+    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, 4, true, *set);
+    const PVF::Amg_sparse_solver amg;
+    const auto sequential = design_with(tm, 4, true, *set, amg);
+    EXPECT_LT(relative_difference(ldlt, sequential), 1e-8);
+    const PVF::Amg_statistics s = amg.statistics();
+    EXPECT_GE(s.level_sizes.size(), 2u);
+    EXPECT_EQ(s.analyses, 1u);  // one structure for all the blocks of the system
+    EXPECT_GE(s.max_iterations, 10u);
+    EXPECT_LE(s.max_iterations, 30u);
+    EXPECT_EQ(s.fallbacks, 0u);
+#ifdef CGAL_LINKED_WITH_TBB
+    const auto parallel = design_with<PVF::Amg_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, *set, amg);
+    ASSERT_EQ(parallel.size(), sequential.size());
+    EXPECT_EQ(std::memcmp(parallel.data(), sequential.data(), parallel.size() * sizeof(Complex)), 0);
+#endif
+  }
+}
+
+// The frame-field iterations refactor with a new lambda at every step: every
+// reuse of the hierarchy, with and without warm starts, follows the direct
+// solver's iterations to 1e-8 after six steps; reuse 2 does keep coarse levels.
+TEST(SolverAgreement, AmgConjugateFieldStepsMatchSimplicialLDLT)
+{
+  const Mesh tm = closed_mesh();
+  const auto constraints = constraints_for(tm, 4, true, 12);
+  auto run = [&](const auto& solver) {
+    std::map<face_descriptor, std::vector<Complex> > out;
+    PVF::Conjugate_field_result result;
+    EXPECT_EQ(PVF::design_conjugate_frame_field(tm, constraints, boost::make_assoc_property_map(out), result,
+                                                PVF::parameters::tolerance(1e-300, CGAL::parameters::sparse_linear_solver(solver)
+                                                                                     .number_of_iterations(6))),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(result.iterations, 6u);
+    std::vector<Complex> c;
+    for(face_descriptor f : tm.faces())
+      c.insert(c.end(), out[f].begin(), out[f].end());
+    return c;
+  };
+  const auto ref = run(PVF::Simplicial_ldlt_solver());
+  for(int reuse : { 0, 1, 2 })
+    for(bool warm : { false, true })
+    {
+      SCOPED_TRACE("reuse " + std::to_string(reuse) + (warm ? ", warm" : ", cold"));
+      const PVF::Amg_sparse_solver amg = small_amg(reuse, warm);
+      EXPECT_LT(relative_difference(ref, run(amg)), 1e-8);
+      const PVF::Amg_statistics s = amg.statistics();
+      EXPECT_EQ(s.fallbacks, 0u);
+      if(reuse == 2)
+        EXPECT_GT(s.reused_setups, 0u);
+      else
+        EXPECT_EQ(s.reused_setups, 0u);
+    }
+}
+
+// One iteration allowed: every solve falls back to the direct factorization,
+// says so, and the field is still the direct solver's.
+TEST(SolverAgreement, AmgFallsBackToDirectSolverAndSaysSo)
+{
+  const Mesh tm = closed_mesh();
+  const auto constraints = constraints_for(tm, 4, true, 12);
+  const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, 4, true, constraints);
+  const PVF::Amg_sparse_solver amg = small_amg(2, true, 1);
+  const auto a = design_with(tm, 4, true, constraints, amg);
+  EXPECT_LT(relative_difference(ldlt, a), 1e-10);
+  const PVF::Amg_statistics s = amg.statistics();
+  EXPECT_EQ(s.solves, 2u);  // the two degrees of a frame field
+  EXPECT_EQ(s.fallbacks, 2u);
+}
+
+// The concept's own interface (factor, linear_solver) on a Hermitian positive
+// definite matrix; an indefinite one is refused; a NaN right-hand side too.
+TEST(SolverAgreement, AmgConceptInterfaceAndIndefiniteMatrices)
+{
+  const int n = 200;
+  PVF::Amg_sparse_solver::Matrix A(n, n);
+  const Complex i(0, 1);
+  for(int k = 0; k < n; ++k)
+  {
+    A.add_coef(k, k, Complex(2.5));
+    if(k + 1 < n)
+    {
+      A.add_coef(k, k + 1, -std::polar(1.0, 0.1 * k));
+      A.add_coef(k + 1, k, -std::polar(1.0, -0.1 * k));
+    }
+  }
+  PVF::Amg_sparse_solver amg = small_amg();
+  PVF::Amg_sparse_solver::Vector B(n), X(n);
+  for(int k = 0; k < n; ++k)
+    B[k] = Complex(std::cos(k), std::sin(0.5 * k));
+  Complex D;
+  ASSERT_TRUE(amg.factor(A, D));
+  EXPECT_EQ(D, Complex(1));
+  ASSERT_TRUE(amg.linear_solver(B, X));
+  const Eigen::VectorXcd residual = A.eigen_object() * X - B;
+  EXPECT_LE(residual.norm(), 2 * amg.parameters().tolerance * B.norm());  // the same residual, summed in another order
+  EXPECT_GE(amg.statistics().level_sizes.size(), 3u);
+  PVF::Amg_sparse_solver::Vector nan_rhs = B;
+  nan_rhs[3] = Complex(std::nan(""), 0);
+  EXPECT_FALSE(amg.linear_solver(nan_rhs, X));
+
+  PVF::Amg_sparse_solver::Matrix M(n, n);
+  for(int k = 0; k < n; ++k)
+  {
+    M.add_coef(k, k, Complex(k == 7 ? -1.0 : 2.5));
+    if(k + 1 < n)
+    {
+      M.add_coef(k, k + 1, -i);
+      M.add_coef(k + 1, k, i);
+    }
+  }
+  PVF::Amg_sparse_solver refused = small_amg();
+  EXPECT_FALSE(refused.factor(M, D) && refused.linear_solver(B, X));
+}
+
+// The adaptive solver: below its threshold the direct solver's own bits,
+// above it multigrid (to 1e-8), chosen per system by its number of unknowns.
+TEST(SolverAgreement, AdaptiveSolverPicksBySize)
+{
+  typedef PVF::Adaptive_sparse_solver<PVF::Simplicial_ldlt_solver> Adaptive;
+  const Mesh tm = closed_mesh();
+  const auto constraints = constraints_for(tm, 4, true, 12);
+  const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, 4, true, constraints);
+  const std::size_t unknowns = tm.number_of_faces() - 8;  // the 8 hard constraints fix their faces
+  const Adaptive direct(unknowns + 1, PVF::Simplicial_ldlt_solver(), small_amg());
+  const auto below = design_with(tm, 4, true, constraints, direct);
+  ASSERT_EQ(below.size(), ldlt.size());
+  EXPECT_EQ(std::memcmp(below.data(), ldlt.data(), ldlt.size() * sizeof(Complex)), 0);
+  EXPECT_EQ(direct.amg_solver().statistics().solves, 0u);
+  const Adaptive amg(unknowns, PVF::Simplicial_ldlt_solver(), small_amg());
+  const auto above = design_with(tm, 4, true, constraints, amg);
+  EXPECT_LT(relative_difference(ldlt, above), 1e-8);
+  EXPECT_GT(relative_difference(ldlt, above), 0.0);  // a different computation
+  EXPECT_EQ(amg.amg_solver().statistics().solves, 2u);
 }
 
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE

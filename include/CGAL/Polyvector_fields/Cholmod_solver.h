@@ -46,7 +46,8 @@ namespace Polyvector_fields {
 /// (AMD, or METIS when AMD's fill is large and CHOLMOD was built with it) and
 /// between a simplicial \f$ LDL^* \f$ and a supernodal \f$ LL^* \f$
 /// factorization (supernodal, with BLAS, when the factor is dense enough).
-/// It is `Default_sparse_solver` when `CGAL_PVF_HAS_CHOLMOD` is defined.
+/// It is `Direct_sparse_solver` (the direct solver of `Default_sparse_solver`)
+/// when `CGAL_PVF_HAS_CHOLMOD` is defined.
 ///
 /// It is a model of `SparseLinearAlgebraWithFactorTraits_d` on
 /// `std::complex<double>` (Eigen's `CholmodDecomposition` through

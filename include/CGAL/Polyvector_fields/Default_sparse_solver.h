@@ -12,6 +12,8 @@
 ///
 /// The sparse solvers that are always available, and the package's default.
 
+#include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
+#include <CGAL/Polyvector_fields/Amg_solver.h>
 #include <CGAL/Polyvector_fields/internal/Factorization.h>
 
 #if defined(CGAL_PVF_HAS_CHOLMOD)
@@ -39,18 +41,25 @@ typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std:
 #if defined(DOXYGEN_RUNNING)
 /// \ingroup PkgPolyvectorFieldsSolvers
 ///
-/// is the solver used when none is given: `Cholmod_sparse_solver` when the
+/// is the direct solver of the package: `Cholmod_sparse_solver` when the
 /// macro `CGAL_PVF_HAS_CHOLMOD` is defined (the CMake target
 /// `CGAL::Polyvector_fields_CHOLMOD_support` defines it when CMake found
 /// CHOLMOD at configure time), `Simplicial_ldlt_solver` otherwise. Both give the
 /// same fields to rounding; CHOLMOD is faster on large meshes (about 2.5 times
 /// at 640k faces, see the benchmark suite).
-typedef unspecified_type Default_sparse_solver;
+typedef unspecified_type Direct_sparse_solver;
 #elif defined(CGAL_PVF_HAS_CHOLMOD)
-typedef Cholmod_sparse_solver Default_sparse_solver;
+typedef Cholmod_sparse_solver Direct_sparse_solver;
 #else
-typedef Simplicial_ldlt_solver Default_sparse_solver;
+typedef Simplicial_ldlt_solver Direct_sparse_solver;
 #endif
+
+/// \ingroup PkgPolyvectorFieldsSolvers
+///
+/// is the solver used when none is given: `Direct_sparse_solver` for systems
+/// of fewer than 8,000 unknowns, `Amg_sparse_solver` (multigrid-preconditioned
+/// conjugate gradient, whose cost grows linearly) for larger ones.
+typedef Adaptive_sparse_solver<Direct_sparse_solver> Default_sparse_solver;
 
 } // namespace Polyvector_fields
 } // namespace CGAL

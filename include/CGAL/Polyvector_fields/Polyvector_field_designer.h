@@ -75,8 +75,9 @@ struct Design_statistics
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
 ///         `CGAL::Default` means the internal point map of the mesh
 /// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` on `std::complex<double>`;
-///         by default `Default_sparse_solver` (CHOLMOD when it was found at configure time,
-///         Eigen's `SimplicialLDLT` otherwise), which `CGAL::Default` also means
+///         by default `Default_sparse_solver` (the direct solver, CHOLMOD when it was found at
+///         configure time and Eigen's `SimplicialLDLT` otherwise, below 8,000 unknowns per
+///         system, multigrid-preconditioned conjugate gradient above), which `CGAL::Default` also means
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
 ///         with parallelism (TBB), the independent coefficient degrees are assembled, factored and solved
 ///         at the same time (with the package's own solvers `Cholmod_sparse_solver` and
@@ -302,6 +303,7 @@ private:
         m_system.reset();
         return Error_code::SOLVER_FAILURE;
       }
+      m_system->release_matrices();  // the designer never refactors: new weights make a new system
       m_statistics.assembly = m_system->times().assembly;
       m_statistics.factorization = m_system->times().factorization;
     }

@@ -21,10 +21,22 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/blocked_range.h>
+#  include <tbb/parallel_for.h>
+#  include <tbb/parallel_invoke.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
 #include <complex>
 #include <cstddef>
+#include <memory>
 #include <numeric>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -40,6 +52,72 @@ face_of(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const
 {
   return face(h, tm);
 }
+
+// Whether `T` is one of CGAL's concurrency tags (`Sequential_tag`, `Parallel_tag`,
+// `Parallel_if_available_tag`).
+template <typename T>
+struct Is_concurrency_tag : std::is_convertible<T, CGAL::Sequential_tag> {};
+
+// Calls `range(begin, end)` on consecutive ranges that cover 0 .. n-1 once:
+// with `CGAL::Parallel_tag` (and TBB), on several threads, in ranges of about
+// `grain` indices; otherwise once on the calling thread. `range` must treat
+// each index independently of the others, so that the result does not depend
+// on how the indices are split.
+template <typename ConcurrencyTag, typename Range>
+void for_each_range(std::size_t n, std::size_t grain, const Range& range)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && n > grain)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&range](const tbb::blocked_range<std::size_t>& r) { range(r.begin(), r.end()); });
+    return;
+  }
+#else
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  range(std::size_t(0), n);
+}
+
+// Calls `a()` and `b()`: with `CGAL::Parallel_tag` (and TBB) at the same time,
+// otherwise one after the other. They must not write the same data.
+template <typename ConcurrencyTag, typename A, typename B>
+void invoke_both(const A& a, const B& b)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_invoke(a, b);
+    return;
+  }
+#endif
+  a();
+  b();
+}
+
+// An allocator that leaves the elements of `resize(n)` default-initialised
+// (uninitialised for a trivial type), so that a vector is first written, and
+// its memory first touched, by the threads that compute it.
+template <typename T>
+struct Uninitialized_allocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind { typedef Uninitialized_allocator<U> other; };
+  Uninitialized_allocator() = default;
+  template <typename U>
+  Uninitialized_allocator(const Uninitialized_allocator<U>&) noexcept {}
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new(static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
 
 } // namespace internal
 
@@ -68,6 +146,14 @@ face_of(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const
 ///
 /// All quantities are computed in `double`, safely over the whole range of
 /// `double` (points are scaled by powers of two where a square could overflow).
+///
+/// <b>Concurrency.</b> The constructors take an optional concurrency tag,
+/// `CGAL::Parallel_if_available_tag` by default: with `CGAL::Parallel_tag`
+/// (and TBB) the frames and the transport of the faces and edges are computed
+/// on several threads, which then read the mesh and the vertex point map at
+/// the same time. Each frame and each transport is computed by the same
+/// operations whatever the tag and the number of threads, so the bundle is
+/// bit-identical to the one built with `CGAL::Sequential_tag`.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
@@ -101,11 +187,32 @@ public:
   /// @}
 
   /// builds the tangent bundle of `tm` with the points of `vpm`. Check `status()` before use.
-  Tangent_bundle(const TriangleMesh& tm, VertexPointMap vpm) : m_tm(tm), m_vpm(vpm) { build(); }
+  Tangent_bundle(const TriangleMesh& tm, VertexPointMap vpm)
+    : Tangent_bundle(tm, vpm, CGAL::Parallel_if_available_tag())
+  {}
 
   /// builds the tangent bundle of `tm` with its internal point map.
   explicit Tangent_bundle(const TriangleMesh& tm)
-    : Tangent_bundle(tm, CGAL::get_const_property_map(CGAL::vertex_point, tm))
+    : Tangent_bundle(tm, CGAL::get_const_property_map(CGAL::vertex_point, tm), CGAL::Parallel_if_available_tag())
+  {}
+
+  /// builds the tangent bundle of `tm` with the points of `vpm`, in parallel or not as
+  /// `ConcurrencyTag` says (`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+  /// `CGAL::Parallel_if_available_tag`); the result does not depend on it.
+  template <typename ConcurrencyTag,
+            typename = std::enable_if_t<internal::Is_concurrency_tag<ConcurrencyTag>::value> >
+  Tangent_bundle(const TriangleMesh& tm, VertexPointMap vpm, ConcurrencyTag)
+    : m_tm(tm), m_vpm(vpm)
+  {
+    build<ConcurrencyTag>();
+  }
+
+  /// builds the tangent bundle of `tm` with its internal point map, in parallel or not as
+  /// `ConcurrencyTag` says; the result does not depend on it.
+  template <typename ConcurrencyTag,
+            typename = std::enable_if_t<internal::Is_concurrency_tag<ConcurrencyTag>::value> >
+  Tangent_bundle(const TriangleMesh& tm, ConcurrencyTag tag)
+    : Tangent_bundle(tm, CGAL::get_const_property_map(CGAL::vertex_point, tm), tag)
   {}
 
   /// returns `Error_code::SUCCESS`, or why the mesh cannot carry a field:
@@ -156,9 +263,7 @@ public:
   /// returns the unit direction, in the frame of `face(h)`, of the edge from `source(h)` to `target(h)`.
   std::complex<double> edge_direction(halfedge_descriptor h) const
   {
-    const std::array<double, 3> d = internal::scaled_difference(point_of(target(h, m_tm)), point_of(source(h, m_tm)));
-    const std::complex<double> e = frame(index(internal::face_of(h, m_tm))).to_complex(d[0], d[1], d[2]);
-    return e / std::abs(e);
+    return edge_direction_in(h, frame(index(internal::face_of(h, m_tm))));
   }
   /// transports the tangent vector `u` of `face(h)` to `face(opposite(h))`.
   std::complex<double> transport(const std::complex<double>& u, halfedge_descriptor h) const
@@ -185,15 +290,32 @@ private:
     return internal::to_array(get(m_vpm, v));
   }
 
+  // The unit direction of the edge of `h` in `frame`, the frame of `face(h)`:
+  // the one computation of `edge_direction()` and of the transport.
+  std::complex<double> edge_direction_in(halfedge_descriptor h, const Face_frame& frame) const
+  {
+    const std::array<double, 3> d = internal::scaled_difference(point_of(target(h, m_tm)), point_of(source(h, m_tm)));
+    const std::complex<double> e = frame.to_complex(d[0], d[1], d[2]);
+    return e / std::abs(e);
+  }
+
+  // Faces and edges per thread range: below this TBB's overhead is not worth it.
+  static constexpr std::size_t grain = 4096;
+
+  template <typename ConcurrencyTag>
   void build()
   {
-    m_faces.reserve(num_faces(m_tm));
+    const std::size_t F = num_faces(m_tm);
+    m_faces.reserve(F);
+    m_face_index.reserve(F);
     for(face_descriptor f : faces(m_tm))
     {
       m_face_index.add(f);
       m_faces.push_back(f);
     }
-    m_vertices.reserve(num_vertices(m_tm));
+    const std::size_t V = num_vertices(m_tm);
+    m_vertices.reserve(V);
+    m_vertex_index.reserve(V);
     for(vertex_descriptor v : vertices(m_tm))
     {
       m_vertex_index.add(v);
@@ -205,18 +327,81 @@ private:
       return;
     }
 
-    m_frames.resize(m_faces.size());
-    for(std::size_t i = 0; i < m_faces.size(); ++i)
+    // The interior edges, in the order of edges(tm).
+    std::vector<halfedge_descriptor> interior;
+    interior.reserve(num_edges(m_tm));
+    for(auto e : edges(m_tm))
     {
-      const Error_code code = face_frame(m_faces[i], m_tm, m_frames[i], CGAL::parameters::vertex_point_map(m_vpm));
-      if(code != Error_code::SUCCESS)
-      {
-        m_status = code;
-        m_first_invalid_face = i;
-        return;
-      }
+      const halfedge_descriptor h = halfedge(e, m_tm);
+      if(!CGAL::is_border(h, m_tm) && !CGAL::is_border(opposite(h, m_tm), m_tm))
+        interior.push_back(h);  // natural boundary condition: boundary edges carry no term
     }
 
+    // The frames, each face on its own, while the calling thread also
+    // allocates the edges (the first touch of their memory costs as much as
+    // computing a frame). The first invalid face is the one of smallest index,
+    // whichever thread meets it first.
+    m_frames.resize(m_faces.size());  // not initialised: each frame is written once below
+    std::atomic<std::size_t> first_invalid(m_faces.size());
+    internal::invoke_both<ConcurrencyTag>(
+      [&] {
+        internal::for_each_range<ConcurrencyTag>(m_faces.size(), grain, [&](std::size_t begin, std::size_t end) {
+          for(std::size_t i = begin; i < end; ++i)
+          {
+            if(i >= first_invalid.load(std::memory_order_relaxed))
+              return;  // a face before this one failed
+            if(face_frame(m_faces[i], m_tm, m_frames[i], CGAL::parameters::vertex_point_map(m_vpm)) != Error_code::SUCCESS)
+            {
+              std::size_t current = first_invalid.load(std::memory_order_relaxed);
+              while(i < current && !first_invalid.compare_exchange_weak(current, i, std::memory_order_relaxed))
+              {}
+              return;
+            }
+          }
+        });
+      },
+      [&] { m_edges.resize(interior.size()); });
+    if(first_invalid.load() < m_faces.size())
+    {
+      // As a face-by-face loop leaves it: no frame from the invalid face on, no edge.
+      const std::size_t i = first_invalid.load();
+      std::fill(m_frames.begin() + std::ptrdiff_t(i), m_frames.end(), Face_frame());
+      Face_frame unused;
+      m_status = face_frame(m_faces[i], m_tm, unused, CGAL::parameters::vertex_point_map(m_vpm));
+      m_first_invalid_face = i;
+      std::vector<Dual_edge>().swap(m_edges);
+      return;
+    }
+
+    internal::for_each_range<ConcurrencyTag>(m_edges.size(), grain, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        Dual_edge& d = m_edges[i];
+        d.h = interior[i];
+        d.f = index(internal::face_of(d.h, m_tm));
+        d.g = index(internal::face_of(opposite(d.h, m_tm), m_tm));
+      }
+    });
+
+    // The transport of each edge on its own, while the calling thread also
+    // finds the connected components (which read only the faces of the edges).
+    internal::invoke_both<ConcurrencyTag>(
+      [&] {
+        internal::for_each_range<ConcurrencyTag>(m_edges.size(), grain, [&](std::size_t begin, std::size_t end) {
+          for(std::size_t i = begin; i < end; ++i)
+          {
+            Dual_edge& d = m_edges[i];
+            d.e_f = edge_direction_in(d.h, m_frames[d.f]);
+            d.e_g = -edge_direction_in(opposite(d.h, m_tm), m_frames[d.g]);
+          }
+        });
+      },
+      [&] { build_components(); });
+  }
+
+  // The connected components, numbered in the order of their first face.
+  void build_components()
+  {
     std::vector<std::size_t> parent(m_faces.size());
     std::iota(parent.begin(), parent.end(), std::size_t(0));
     auto find = [&parent](std::size_t i) {
@@ -224,23 +409,8 @@ private:
         i = parent[i] = parent[parent[i]];
       return i;
     };
-
-    m_edges.reserve(num_edges(m_tm));
-    for(auto e : edges(m_tm))
-    {
-      const halfedge_descriptor h = halfedge(e, m_tm);
-      const halfedge_descriptor o = opposite(h, m_tm);
-      if(CGAL::is_border(h, m_tm) || CGAL::is_border(o, m_tm))
-        continue;  // natural boundary condition: boundary edges carry no term
-      Dual_edge d;
-      d.h = h;
-      d.f = index(internal::face_of(h, m_tm));
-      d.g = index(internal::face_of(o, m_tm));
-      d.e_f = edge_direction(h);
-      d.e_g = -edge_direction(o);
-      m_edges.push_back(d);
+    for(const Dual_edge& d : m_edges)
       parent[find(d.f)] = find(d.g);
-    }
 
     m_component.resize(m_faces.size());
     std::vector<std::size_t> label(m_faces.size(), std::size_t(-1));
@@ -260,7 +430,7 @@ private:
   internal::Numbering<vertex_descriptor> m_vertex_index;
   std::vector<face_descriptor> m_faces;
   std::vector<vertex_descriptor> m_vertices;
-  std::vector<Face_frame> m_frames;
+  std::vector<Face_frame, internal::Uninitialized_allocator<Face_frame> > m_frames;
   std::vector<Dual_edge> m_edges;
   std::vector<std::size_t> m_component;
   std::size_t m_number_of_components = 0;

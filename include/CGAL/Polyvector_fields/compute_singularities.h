@@ -15,6 +15,7 @@
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/Singularity.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
+#include <CGAL/Polyvector_fields/internal/Face_numbering.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
@@ -23,6 +24,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/iterator.h>
+#include <CGAL/tags.h>
 
 #include <cmath>
 #include <complex>
@@ -95,6 +97,99 @@ int index_numerator(const Bundle& bundle, std::size_t N, const std::vector<std::
   return int(std::lround(k));
 }
 
+// The index numerators of all vertices, as index_numerator() computes them
+// vertex by vertex, bit for bit, but with the matching angle of each interior
+// edge computed once (from the transport of the bundle, which holds the same
+// edge directions) and the vertices shared among threads with
+// CGAL::Parallel_tag. `state[i]` is 0 for a boundary or isolated vertex of
+// index i (no index), 1 for an index numerator `numerator[i]`, 2 for an
+// undefined index.
+template <typename ConcurrencyTag, typename Bundle>
+void index_numerators(const Bundle& bundle, std::size_t N, const std::vector<std::complex<double> >& c,
+                      std::vector<int>& numerator, std::vector<unsigned char>& state)
+{
+  typedef typename Bundle::Triangle_mesh Triangle_mesh;
+  typedef typename boost::graph_traits<Triangle_mesh>::edge_descriptor edge_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
+  constexpr std::size_t grain = 4096;
+  const Triangle_mesh& tm = bundle.mesh();
+  const auto& edges = bundle.interior_edges();
+
+  Numbering<edge_descriptor> edge_number;  // the position of an edge in `edges`
+  edge_number.reserve(num_edges(tm));
+  for(const auto& e : edges)
+    edge_number.add(edge(e.h, tm));
+
+  // The matching angle across the canonical halfedge of each edge, the one whose
+  // face has the smaller index (see index_numerator()), and whether c_0 vanishes
+  // on one side. The canonical halfedge is e.h if e.f < e.g, with the edge
+  // directions e.e_f and e.e_g; otherwise it is opposite(e.h), with the
+  // directions -e.e_g and -e.e_f (f != g: the bundle of a triangle mesh has no
+  // face on both sides of an edge).
+  std::vector<double> delta(edges.size());
+  std::vector<unsigned char> vanishes(edges.size());
+  for_each_range<ConcurrencyTag>(edges.size(), grain, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      const auto& e = edges[i];
+      const bool canonical = e.f < e.g;
+      const std::size_t f = canonical ? e.f : e.g, g = canonical ? e.g : e.f;
+      const std::complex<double> y_f = c[f * N], y_g = c[g * N];
+      if(y_f == std::complex<double>(0) || y_g == std::complex<double>(0))
+      {
+        vanishes[i] = 1;
+        continue;
+      }
+      const std::complex<double> e_f = canonical ? e.e_f : -e.e_g, e_g = canonical ? e.e_g : -e.e_f;
+      const std::complex<double> u_f = y_f / std::abs(y_f);
+      const std::complex<double> u_g = y_g / std::abs(y_g);
+      delta[i] = std::arg(u_g * std::pow(std::conj(e_g), int(N)) * std::conj(u_f) * std::pow(e_f, int(N)));
+    }
+  });
+
+  const std::size_t V = bundle.number_of_vertices();
+  numerator.assign(V, 0);
+  state.assign(V, 0);
+  for_each_range<ConcurrencyTag>(V, grain, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t v = begin; v < end; ++v)
+    {
+      const halfedge_descriptor h0 = halfedge(bundle.vertex(v), tm);
+      if(h0 == boost::graph_traits<Triangle_mesh>::null_halfedge() || CGAL::is_border(bundle.vertex(v), tm))
+        continue;
+      // The walk of index_numerator(), with the same sums in the same order.
+      double angle_sum = 0, delta_sum = 0;
+      bool defined = true, interior = true;
+      halfedge_descriptor h = h0;
+      do
+      {
+        std::size_t i;
+        if(!edge_number.find(edge(h, tm), i))
+        {
+          interior = false;  // not a manifold ring: no index, as for a boundary vertex
+          break;
+        }
+        const auto& e = edges[i];
+        if(vanishes[i])
+          defined = false;
+        delta_sum += ((h == e.h) == (e.f < e.g)) ? delta[i] : -delta[i];
+        angle_sum += corner_angle(bundle, h);
+        h = prev(opposite(h, tm), tm);  // the next face counterclockwise around the vertex
+      } while(h != h0);
+      if(!interior)
+        continue;
+      if(!defined)
+      {
+        state[v] = 2;
+        continue;
+      }
+      const double defect = two_pi - angle_sum;
+      const double k = (double(N) * defect + delta_sum) / two_pi;
+      numerator[v] = int(std::lround(k));
+      state[v] = 1;
+    }
+  });
+}
+
 } // namespace internal
 
 /// \ingroup PkgPolyvectorFieldsTopology
@@ -114,6 +209,13 @@ int index_numerator(const Bundle& bundle, std::size_t N, const std::vector<std::
 /// If some face around an interior vertex has `c_0 = 0`, the index there is
 /// undefined: the vertex is written to `undefined_vertices` and to no other output.
 ///
+/// Both outputs are written in the order of the vertex numbering of the bundle
+/// (the order of `vertices(tm)`), whatever the concurrency tag.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         with parallelism (TBB) the vertices are shared among threads, which read the mesh and the
+///         vertex point map of the bundle at the same time (the coefficient map and the output iterators
+///         are used by the calling thread only); the result does not depend on it
 /// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
 ///         with the named parameter `vertex_point_map`)
 /// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>` of size `N`
@@ -122,7 +224,8 @@ int index_numerator(const Bundle& bundle, std::size_t N, const std::vector<std::
 ///
 /// \returns `SUCCESS`, a mesh error, `INVALID_DEGREE`, `INCONSISTENT_DEGREE` or `NON_FINITE_VALUE`;
 ///          nothing is written on failure.
-template <typename Mesh_or_bundle, typename CoefficientMap, typename SingularityOutputIterator,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename Mesh_or_bundle, typename CoefficientMap, typename SingularityOutputIterator,
           typename VertexOutputIterator, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
                                  SingularityOutputIterator singularities, VertexOutputIterator undefined_vertices,
@@ -130,45 +233,35 @@ Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size
 {
   const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
   typedef typename std::decay_t<decltype(bundle)>::vertex_descriptor vertex_descriptor;
-  const auto& tm = bundle.mesh();
   std::vector<std::complex<double> > c;
   const Error_code code = internal::read_coefficients(bundle, N, coefficient_map, c);
   if(code != Error_code::SUCCESS)
     return code;
-  std::vector<Singularity<vertex_descriptor> > found;
-  std::vector<vertex_descriptor> undefined;
+  std::vector<int> numerator;
+  std::vector<unsigned char> state;
+  internal::index_numerators<ConcurrencyTag>(bundle, N, c, numerator, state);
   for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
-  {
-    const vertex_descriptor v = bundle.vertex(i);
-    const auto h0 = halfedge(v, tm);
-    if(h0 == boost::graph_traits<std::decay_t<decltype(tm)> >::null_halfedge() || CGAL::is_border(v, tm))
-      continue;
-    bool defined;
-    double residual;
-    const int k = internal::index_numerator(bundle, N, c, h0, defined, residual);
-    if(!defined)
-      undefined.push_back(v);
-    else if(k != 0)
-      found.push_back(Singularity<vertex_descriptor>{ v, k });
-  }
-  for(const auto& s : found)
-    *singularities++ = s;
-  for(const auto& v : undefined)
-    *undefined_vertices++ = v;
+    if(state[i] == 1 && numerator[i] != 0)
+      *singularities++ = Singularity<vertex_descriptor>{ bundle.vertex(i), numerator[i] };
+  for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
+    if(state[i] == 2)
+      *undefined_vertices++ = bundle.vertex(i);
   return Error_code::SUCCESS;
 }
 
 /// \ingroup PkgPolyvectorFieldsTopology
 ///
 /// computes the singularities as the other overload, and drops the vertices of undefined index.
-template <typename Mesh_or_bundle, typename CoefficientMap, typename SingularityOutputIterator,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename Mesh_or_bundle, typename CoefficientMap, typename SingularityOutputIterator,
           typename T = bool, typename Tag = CGAL::internal_np::all_default_t,
           typename Base = CGAL::internal_np::No_property>
 Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, CoefficientMap coefficient_map,
                                  SingularityOutputIterator singularities,
                                  const CGAL::Named_function_parameters<T, Tag, Base>& np = CGAL::parameters::default_values())
 {
-  return compute_singularities(mesh_or_bundle, N, coefficient_map, singularities, CGAL::Emptyset_iterator(), np);
+  return compute_singularities<ConcurrencyTag>(mesh_or_bundle, N, coefficient_map, singularities,
+                                               CGAL::Emptyset_iterator(), np);
 }
 
 /// \ingroup PkgPolyvectorFieldsTopology

@@ -47,7 +47,7 @@ namespace Polyvector_fields {
 /// of `SparseLinearAlgebraWithFactorTraits_d` on `double` (the system is real,
 /// symmetric and positive definite): CHOLMOD through Eigen's
 /// `CholmodDecomposition` when the macro `CGAL_PVF_HAS_CHOLMOD` is defined (as
-/// for `Default_sparse_solver`), Eigen's `SimplicialLDLT` otherwise.
+/// for `Direct_sparse_solver`), Eigen's `SimplicialLDLT` otherwise.
 typedef unspecified_type Default_real_sparse_solver;
 #elif defined(CGAL_PVF_HAS_CHOLMOD)
 typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> >

@@ -21,16 +21,24 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/parallel_for.h>
+#endif
+
+#include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <istream>
 #include <limits>
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,39 +48,142 @@ namespace IO {
 
 namespace internal {
 
-template <typename TriangleMesh, typename RootMap>
-Error_code rawfield_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N, std::string& out)
+// The checks of the writer, in the order of the text: the first face with
+// another number of vectors than N, or a non-finite coordinate, is refused.
+template <typename RootMap, typename FaceList>
+Error_code check_rawfield(RootMap root_map, std::size_t N, const FaceList& face_ids)
 {
   using boost::get;
   if(N == 0)
     return Error_code::INVALID_DEGREE;
-  std::string text;
-  const auto face_ids = face_list(tm);
-  append_integer(text, N);
-  text += ' ';
-  append_integer(text, face_ids.size());
-  text += '\n';
   for(const auto f : face_ids)
   {
     const auto& roots = get(root_map, f);
     if(std::size_t(roots.size()) != N)
       return Error_code::INCONSISTENT_DEGREE;
-    bool first = true;
+    for(const auto& u : roots)
+      if(!std::isfinite(CGAL::to_double(u.x())) || !std::isfinite(CGAL::to_double(u.y())) ||
+         !std::isfinite(CGAL::to_double(u.z())))
+        return Error_code::NON_FINITE_VALUE;
+  }
+  return Error_code::SUCCESS;
+}
+
+// Appends the lines of the faces face_ids[first, last) to `text`: the 3N
+// coordinates of each face, shortest round-trip text, one space apart.
+template <typename RootMap, typename FaceList>
+void append_rawfield_lines(RootMap root_map, std::size_t N, const FaceList& face_ids, std::size_t first,
+                           std::size_t last, std::string& text)
+{
+  using boost::get;
+  // At most 25 characters for a number and its separator.
+  const std::size_t line_size = 3 * N * 25 + 1;
+  const std::size_t start = text.size();
+  text.resize(start + (last - first) * line_size);
+  char* p = &text[start];
+  // The coordinates of a face already written, for the ones that repeat
+  // their magnitude (the opposite vectors of a sign-symmetric field): the text
+  // of -x is '-' followed by the text of x.
+  constexpr std::size_t window = 32;
+  double magnitude[window];
+  std::size_t text_begin[window], text_size[window];
+  for(std::size_t i = first; i < last; ++i)
+  {
+    const auto& roots = get(root_map, face_ids[i]);
+    char* const line = p;
+    std::size_t seen = 0;
     for(const auto& u : roots)
     {
       const double xyz[3] = { CGAL::to_double(u.x()), CGAL::to_double(u.y()), CGAL::to_double(u.z()) };
       for(double c : xyz)
       {
-        if(!std::isfinite(c))
-          return Error_code::NON_FINITE_VALUE;
-        if(!first)
-          text += ' ';
-        first = false;
-        append_double(text, c);
+        if(p != line)
+          *p++ = ' ';
+        if(std::signbit(c))
+          *p++ = '-';
+        const double m = std::abs(c);
+        std::size_t k = 0;
+        const std::size_t known = (std::min)(seen, window);
+        while(k < known && magnitude[k] != m)
+          ++k;
+        if(k < known)
+        {
+          std::memcpy(p, line + text_begin[k], text_size[k]);
+          p += text_size[k];
+        }
+        else
+        {
+          char* const begin = p;
+          p = std::to_chars(p, p + 24, m).ptr;
+          const std::size_t slot = seen % window;
+          magnitude[slot] = m;
+          text_begin[slot] = std::size_t(begin - line);
+          text_size[slot] = std::size_t(p - begin);
+          ++seen;
+        }
       }
     }
-    text += '\n';
+    *p++ = '\n';
   }
+  text.resize(std::size_t(p - text.data()));
+}
+
+// Formats the rawfield of a field that check_rawfield() accepted, and hands
+// the text to `sink(const char*, std::size_t)` (false: stop) in chunks of
+// 4096 faces. With CGAL::Parallel_tag (and TBB) the chunks of a batch are
+// formatted in parallel, then handed on in order: the same bytes.
+// Returns false if the sink did.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename RootMap, typename FaceList, typename Sink>
+bool format_rawfield(RootMap root_map, std::size_t N, const FaceList& face_ids, Sink&& sink)
+{
+  std::string header;
+  {
+    char buffer[64];
+    char* p = std::to_chars(buffer, buffer + 32, N).ptr;
+    *p++ = ' ';
+    p = std::to_chars(p, p + 31, face_ids.size()).ptr;
+    *p++ = '\n';
+    header.assign(buffer, p);
+  }
+  if(!sink(static_cast<const char*>(header.data()), header.size()))
+    return false;
+  constexpr std::size_t chunk = 4096, batch = 16;
+  std::vector<std::string> texts(batch);
+  const std::size_t F = face_ids.size();
+  for(std::size_t start = 0; start < F; start += chunk * batch)
+  {
+    const std::size_t chunks = (std::min)(batch, (F - start + chunk - 1) / chunk);
+    auto format = [&](std::size_t c) {
+      texts[c].clear();
+      const std::size_t first = start + c * chunk;
+      append_rawfield_lines(root_map, N, face_ids, first, (std::min)(F, first + chunk), texts[c]);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && chunks > 1)
+      tbb::parallel_for(std::size_t(0), chunks, format);
+    else
+#endif
+      for(std::size_t c = 0; c < chunks; ++c)
+        format(c);
+    for(std::size_t c = 0; c < chunks; ++c)
+      if(!sink(static_cast<const char*>(texts[c].data()), texts[c].size()))
+        return false;
+  }
+  return true;
+}
+
+template <typename TriangleMesh, typename RootMap>
+Error_code rawfield_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N, std::string& out)
+{
+  const auto face_ids = face_list(tm);
+  const Error_code code = check_rawfield(root_map, N, face_ids);
+  if(code != Error_code::SUCCESS)
+    return code;
+  std::string text;
+  format_rawfield(root_map, N, face_ids, [&](const char* data, std::size_t size) {
+    text.append(data, size);
+    return true;
+  });
   out = std::move(text);
   return Error_code::SUCCESS;
 }
@@ -191,11 +302,18 @@ Error_code write_rawfield(std::ostream& os, const TriangleMesh& tm, RootMap root
                           const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   CGAL_USE(np);
-  std::string text;
-  const Error_code code = internal::rawfield_to_string(tm, root_map, N, text);
+  const auto face_ids = internal::face_list(tm);
+  const Error_code code = internal::check_rawfield(root_map, N, face_ids);
   if(code != Error_code::SUCCESS)
     return code;
-  return internal::write_to_stream(os, text);
+  if(!os.good())
+    return Error_code::CANNOT_OPEN_FILE;
+  internal::format_rawfield(root_map, N, face_ids, [&](const char* data, std::size_t size) {
+    os.write(data, static_cast<std::streamsize>(size));
+    return os.good();
+  });
+  os.flush();
+  return os.good() ? Error_code::SUCCESS : Error_code::CANNOT_OPEN_FILE;
 }
 
 /// \ingroup PkgPolyvectorFieldsIO
@@ -214,11 +332,13 @@ Error_code write_rawfield(const std::string& filename, const TriangleMesh& tm, R
                           const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   CGAL_USE(np);
-  std::string text;
-  const Error_code code = internal::rawfield_to_string(tm, root_map, N, text);
+  const auto face_ids = internal::face_list(tm);
+  const Error_code code = internal::check_rawfield(root_map, N, face_ids);
   if(code != Error_code::SUCCESS)
     return code;
-  return internal::write_file_atomically(filename, text);
+  return internal::write_file_atomically_with(filename, [&](auto&& sink) {
+    return internal::format_rawfield(root_map, N, face_ids, sink);
+  });
 }
 
 /// \ingroup PkgPolyvectorFieldsIO

@@ -59,6 +59,8 @@ class Block_factorizations
 public:
   typedef Factorization<SolverTraits> Block;
   typedef typename Block::Solver_scope Solver_scope;
+  // Whether the factorizations may keep references to the matrices.
+  static constexpr bool keeps_matrices = Block::keeps_matrix;
 
   Block_factorizations(const SolverTraits& prototype, bool parallel)
     : m_prototype(prototype), m_parallel(parallel && Block::is_thread_safe)
@@ -69,7 +71,8 @@ public:
   std::size_t size() const { return m_blocks.size(); }
 
   // A new shared analysis on matrices[0], then the numeric factorization of
-  // every block. The matrices must outlive the factorizations.
+  // every block. The matrices must outlive the factorizations if
+  // `keeps_matrices`.
   bool factor(const std::vector<Sparse_matrix>& matrices)
   {
     m_blocks.clear();

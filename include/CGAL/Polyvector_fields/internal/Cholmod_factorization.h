@@ -187,6 +187,7 @@ public:
   typedef Cholmod_symbolic_analysis Shared_analysis;
   typedef Single_threaded_blas_scope Solver_scope;
   static constexpr bool is_thread_safe = true;
+  static constexpr bool keeps_matrix = false;  // CHOLMOD reads the matrix during the call only
 
   Factorization() {}
   explicit Factorization(const Cholmod_sparse_solver&) {}

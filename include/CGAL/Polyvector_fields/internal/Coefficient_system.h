@@ -88,6 +88,17 @@ public:
     return assemble_and_factor();
   }
 
+  // Frees the assembled matrices when no refactor() will follow and the
+  // factorizations keep no reference to them (solve() still works). A
+  // refactor() after it assembles and analyses anew.
+  void release_matrices()
+  {
+    if(Block_factorizations<SolverTraits>::keeps_matrices)
+      return;
+    std::vector<Sparse_matrix>().swap(m_matrices);
+    std::vector<Dense_vector>().swap(m_fixed_values);
+  }
+
   bool refactor()
   {
     typename Block_factorizations<SolverTraits>::Solver_scope scope;
@@ -150,16 +161,27 @@ public:
 private:
   // Refills the matrices in their pattern with the current terms; false if a
   // term falls outside it (then the matrices must be assembled anew). Only
-  // the data term is enumerated: the others are copied from the values kept
-  // by assemble_and_factor().
+  // the data term is enumerated: the others are copied from the values
+  // without it, computed at the first refill after an assembly (a design
+  // that is never refactored does not pay for them).
   bool refill()
   {
-    if(m_factorizations.empty() || m_matrices.size() != m_layout.number_of_blocks() ||
-       m_fixed_values.size() != m_matrices.size())
+    if(m_factorizations.empty() || m_matrices.size() != m_layout.number_of_blocks())
       return false;
     Timer timer;
     std::vector<char> complete(m_matrices.size(), 1);
+    const bool first = m_fixed_values.size() != m_matrices.size();
+    if(first)
+      m_fixed_values.assign(m_matrices.size(), Dense_vector());
     for_each_block(m_matrices.size(), m_factorizations.parallel(), [&](std::size_t b) {
+      if(first)
+      {
+        Sparse_matrix fixed = m_matrices[b];
+        Pattern_sink fixed_sink(fixed);
+        m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, fixed_sink,
+                                 Quadratic_energy::ALL_BUT_DATA_TERM);
+        m_fixed_values[b] = fixed.coeffs();
+      }
       m_matrices[b].coeffs() = m_fixed_values[b];
       Pattern_sink sink(m_matrices[b], true);
       m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, sink, Quadratic_energy::DATA_TERM);
@@ -180,23 +202,17 @@ private:
   }
 
   // New matrices from triplets, a new shared analysis, and the factorizations.
-  // The matrices are members: factorizations may keep a reference to them,
-  // and refactor() refills them.
+  // The matrices are members: refactor() refills them.
   bool assemble_and_factor()
   {
     Timer timer;
     const std::size_t blocks = m_layout.number_of_blocks();
     m_matrices.assign(blocks, Sparse_matrix());
-    m_fixed_values.assign(blocks, Dense_vector());
+    m_fixed_values.clear();  // refill() computes them for these matrices
     for_each_block(blocks, m_factorizations.parallel(), [&](std::size_t b) {
       Triplet_sink sink(4 * m_bundle.interior_edges().size() + m_layout.size());
       m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, sink);
       m_matrices[b] = sink.matrix(m_layout.size());
-      // The values of the terms that refill() does not enumerate again.
-      Sparse_matrix fixed = m_matrices[b];
-      Pattern_sink fixed_sink(fixed);
-      m_energy.enumerate_terms(m_layout, m_unit_specifications, m_data, b, fixed_sink, Quadratic_energy::ALL_BUT_DATA_TERM);
-      m_fixed_values[b] = fixed.coeffs();
       return true;
     });
     m_times.assembly = timer.elapsed();

@@ -38,12 +38,19 @@ template <typename Descriptor, bool dense = Has_idx<Descriptor>::value>
 class Numbering
 {
 public:
+  // Prepares for `n` descriptors of indices below `n` (a hint).
+  void reserve(std::size_t n) { m_index.reserve(n); }
   void add(const Descriptor& d)
   {
     const std::size_t k = std::size_t(d.idx());
-    if(k >= m_index.size())
-      m_index.resize(k + 1, std::size_t(-1));
-    m_index[k] = m_count++;
+    if(k == m_index.size())
+      m_index.push_back(m_count++);  // the common case: indices in increasing order
+    else
+    {
+      if(k > m_index.size())
+        m_index.resize(k + 1, std::size_t(-1));
+      m_index[k] = m_count++;
+    }
   }
   std::size_t operator()(const Descriptor& d) const { return m_index[std::size_t(d.idx())]; }
   bool contains(const Descriptor& d) const
@@ -70,6 +77,7 @@ template <typename Descriptor>
 class Numbering<Descriptor, false>
 {
 public:
+  void reserve(std::size_t n) { m_index.reserve(n); }
   void add(const Descriptor& d) { m_index.emplace(d, m_index.size()); }
   std::size_t operator()(const Descriptor& d) const { return m_index.at(d); }
   bool contains(const Descriptor& d) const { return m_index.count(d) != 0; }

@@ -35,6 +35,9 @@
 //                       must not run concurrently with the other calls;
 //   factorize(A)        numeric factorization (again after a change of values);
 //   solve(b, x).
+// `keeps_matrix` tells whether the factorization may keep a reference to
+// the matrix given to factorize() (Eigen's iterative solvers do), which must
+// then outlive it; the others keep what they need.
 // `is_thread_safe` tells whether distinct factorizations that share an
 // analysis may run analyze (after the first), factorize and solve in
 // different threads at the same time. An object of type `Solver_scope` is
@@ -91,6 +94,8 @@ class Factorization
 public:
   // Copies of a traits model may share state: never run two at once.
   static constexpr bool is_thread_safe = false;
+  // The matrix is copied into the traits' own type.
+  static constexpr bool keeps_matrix = false;
 
   explicit Factorization(const SolverTraits& prototype = SolverTraits()) : m_traits(prototype) {}
 
@@ -144,6 +149,9 @@ class Factorization<CGAL::Eigen_solver_traits<EigenSolver> >
 public:
   // Each factorization owns its solver; a shared ordering is only read once computed.
   static constexpr bool is_thread_safe = true;
+  // A shared ordering factors a permuted copy; another Eigen solver may keep
+  // a reference to the matrix (the iterative ones do).
+  static constexpr bool keeps_matrix = !shares_ordering;
 
   explicit Factorization(const CGAL::Eigen_solver_traits<EigenSolver>& = CGAL::Eigen_solver_traits<EigenSolver>())
     : m_solver(new Solver)

@@ -22,6 +22,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -65,10 +66,14 @@ inline std::string temporary_suffix(unsigned attempt)
   return suffix;
 }
 
-// Writes `content` to `filename` all at once: the destination is replaced by
-// a complete file or left as it was. Returns CANNOT_OPEN_FILE on any failure
-// (no directory, no permission, disk full, destination is a directory, ...).
-inline Error_code write_file_atomically(const std::string& filename, const std::string& content)
+// Writes the text that `produce(sink)` gives, in chunks, to `filename` all
+// at once: the destination is replaced by a complete file or left as it was.
+// `produce` calls `sink(const char* data, std::size_t size)`, which returns
+// false once writing failed, and returns false itself if it stopped. Returns
+// CANNOT_OPEN_FILE on any failure (no directory, no permission, disk full,
+// destination is a directory, ...).
+template <typename Produce>
+Error_code write_file_atomically_with(const std::string& filename, Produce&& produce)
 {
   namespace fs = std::filesystem;
   if(filename.empty())
@@ -96,7 +101,12 @@ inline Error_code write_file_atomically(const std::string& filename, const std::
   if(file == nullptr)
     return Error_code::CANNOT_OPEN_FILE;
 
-  bool ok = content.empty() || std::fwrite(content.data(), 1, content.size(), file) == content.size();
+  bool written = true;
+  auto sink = [&](const char* data, std::size_t size) {
+    written = written && (size == 0 || std::fwrite(data, 1, size, file) == size);
+    return written;
+  };
+  bool ok = produce(sink) && written;
   ok = (std::fflush(file) == 0) && ok;
   ok = (std::ferror(file) == 0) && ok;
   ok = (std::fclose(file) == 0) && ok;
@@ -111,6 +121,12 @@ inline Error_code write_file_atomically(const std::string& filename, const std::
     return Error_code::CANNOT_OPEN_FILE;
   }
   return Error_code::SUCCESS;
+}
+
+// Writes `content` to `filename` all at once (see write_file_atomically_with()).
+inline Error_code write_file_atomically(const std::string& filename, const std::string& content)
+{
+  return write_file_atomically_with(filename, [&](auto&& sink) { return sink(content.data(), content.size()); });
 }
 
 // Writes `content` to a user's stream in one go; CANNOT_OPEN_FILE if the

@@ -91,40 +91,72 @@ inline void keep_polygons(Polygon_soup& soup, std::vector<std::size_t>& source, 
   source.swap(kept_source);
 }
 
-// 1. Points with the same coordinates (+0 and -0 alike) become one.
+// A 64-bit mix (the finaliser of MurmurHash3), for the hash tables below.
+inline std::uint64_t mix_bits(std::uint64_t h)
+{
+  h ^= h >> 33;
+  h *= 0xFF51AFD7ED558CCDULL;
+  h ^= h >> 33;
+  h *= 0xC4CEB93FE1A85EC3ULL;
+  h ^= h >> 33;
+  return h;
+}
+
+// The smallest power of two that is at least 2n (and 16): the size of an
+// open-addressing table of n keys, at most half full.
+inline std::size_t hash_table_size(std::size_t n)
+{
+  std::size_t size = 16;
+  while(size < 2 * n)
+    size *= 2;
+  return size;
+}
+
+// 1. Points with the same coordinates (+0 and -0 alike) become one, the
+// first of them in file order. One pass over an open-addressing table of
+// point ids (no allocation per point).
 inline std::size_t merge_duplicate_points(Polygon_soup& soup)
 {
-  struct Key_hash
-  {
-    std::size_t operator()(const std::array<double, 3>& p) const
+  const std::size_t n = soup.points.size();
+  auto hash = [&](std::size_t v) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ULL;
+    for(double x : soup.points[v])
     {
-      std::uint64_t h = 0x9E3779B97F4A7C15ULL;
-      for(double x : p)
-      {
-        std::uint64_t bits;
-        const double y = (x == 0.) ? 0. : x;
-        std::memcpy(&bits, &y, sizeof bits);
-        h ^= bits + 0x9E3779B97F4A7C15ULL + (h << 6) + (h >> 2);
-      }
-      return std::size_t(h);
+      std::uint64_t bits;
+      const double y = (x == 0.) ? 0. : x;  // -0 hashes as +0
+      std::memcpy(&bits, &y, sizeof bits);
+      h = mix_bits(h ^ bits);
     }
+    return h;
   };
-  struct Key_equal
-  {
-    bool operator()(const std::array<double, 3>& a, const std::array<double, 3>& b) const
-    {
-      return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-    }
-  };
-  std::unordered_map<std::array<double, 3>, std::size_t, Key_hash, Key_equal> first;
-  first.reserve(soup.points.size());
-  std::vector<std::size_t> representative(soup.points.size());
+  const std::size_t size = hash_table_size(n);
+  std::vector<std::size_t> table(size, std::size_t(-1));
+  std::vector<std::size_t> representative;
   std::size_t merged = 0;
-  for(std::size_t v = 0; v < soup.points.size(); ++v)
+  for(std::size_t v = 0; v < n; ++v)
   {
-    const auto inserted = first.emplace(soup.points[v], v);
-    representative[v] = inserted.first->second;
-    merged += inserted.second ? 0 : 1;
+    const std::array<double, 3>& p = soup.points[v];
+    for(std::size_t slot = std::size_t(hash(v)) & (size - 1);; slot = (slot + 1) & (size - 1))
+    {
+      const std::size_t w = table[slot];
+      if(w == std::size_t(-1))
+      {
+        table[slot] = v;
+        break;
+      }
+      const std::array<double, 3>& q = soup.points[w];
+      if(p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
+      {
+        if(representative.empty())
+        {
+          representative.resize(n);
+          std::iota(representative.begin(), representative.end(), std::size_t(0));
+        }
+        representative[v] = w;
+        ++merged;
+        break;
+      }
+    }
   }
   if(merged > 0)
     for(std::size_t& id : soup.ids)
@@ -147,9 +179,29 @@ inline Error_code fix_repeated_vertices(Polygon_soup& soup, std::vector<std::siz
     vertex = *it;
     return true;
   };
+  fixed = 0;
+  // A first pass, without allocation for triangles, tells whether there is
+  // anything to do; the pass below that does it is the rare case.
+  {
+    bool any = false;
+    std::vector<std::size_t> sorted;
+    for(std::size_t i = 0; i < soup.number_of_polygons() && !any; ++i)
+    {
+      const std::size_t* p = soup.polygon(i);
+      if(soup.size(i) == 3)
+        any = p[0] == p[1] || p[1] == p[2] || p[0] == p[2];
+      else
+      {
+        sorted.assign(p, p + soup.size(i));
+        std::sort(sorted.begin(), sorted.end());
+        any = std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+      }
+    }
+    if(!any)
+      return Error_code::SUCCESS;
+  }
   std::vector<std::vector<std::size_t> > polygons;
   std::vector<std::size_t> lines, kept_source;
-  fixed = 0;
   for(std::size_t i = 0; i < soup.number_of_polygons(); ++i)
   {
     std::vector<std::size_t> polygon(soup.polygon(i), soup.polygon(i) + soup.size(i));
@@ -180,11 +232,79 @@ inline Error_code fix_repeated_vertices(Polygon_soup& soup, std::vector<std::siz
   return Error_code::SUCCESS;
 }
 
+// Whether two polygons of `soup` have the same vertex set. Two such polygons
+// have the same smallest vertex: the polygons are bucketed by it (a counting
+// sort), and the few polygons of a bucket compared.
+inline bool has_duplicate_polygons(const Polygon_soup& soup)
+{
+  const std::size_t n = soup.number_of_polygons();
+  auto smallest = [&](std::size_t i) { return *std::min_element(soup.polygon(i), soup.polygon(i) + soup.size(i)); };
+  std::vector<std::size_t> first(soup.points.size() + 1, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    ++first[smallest(i) + 1];
+  for(std::size_t v = 0; v + 1 < first.size(); ++v)
+    first[v + 1] += first[v];
+  std::vector<std::size_t> bucketed(n);
+  {
+    std::vector<std::size_t> cursor(first.begin(), first.end() - 1);
+    for(std::size_t i = 0; i < n; ++i)
+      bucketed[cursor[smallest(i)]++] = i;
+  }
+  // The sorted vertices of the polygons of a bucket, one after the other.
+  std::vector<std::size_t> keys, key_first, order;
+  for(std::size_t v = 0; v + 1 < first.size(); ++v)
+  {
+    const std::size_t count = first[v + 1] - first[v];
+    if(count < 2)
+      continue;
+    keys.clear();
+    key_first.assign(1, 0);
+    for(std::size_t k = first[v]; k < first[v + 1]; ++k)
+    {
+      const std::size_t i = bucketed[k];
+      keys.insert(keys.end(), soup.polygon(i), soup.polygon(i) + soup.size(i));
+      std::sort(keys.begin() + std::ptrdiff_t(key_first.back()), keys.end());
+      key_first.push_back(keys.size());
+    }
+    auto key_less = [&](std::size_t a, std::size_t b) {
+      return std::lexicographical_compare(keys.begin() + std::ptrdiff_t(key_first[a]),
+                                          keys.begin() + std::ptrdiff_t(key_first[a + 1]),
+                                          keys.begin() + std::ptrdiff_t(key_first[b]),
+                                          keys.begin() + std::ptrdiff_t(key_first[b + 1]));
+    };
+    auto key_equal = [&](std::size_t a, std::size_t b) {
+      return key_first[a + 1] - key_first[a] == key_first[b + 1] - key_first[b] &&
+             std::equal(keys.begin() + std::ptrdiff_t(key_first[a]), keys.begin() + std::ptrdiff_t(key_first[a + 1]),
+                        keys.begin() + std::ptrdiff_t(key_first[b]));
+    };
+    if(count <= 16)
+    {
+      for(std::size_t a = 0; a < count; ++a)
+        for(std::size_t b = a + 1; b < count; ++b)
+          if(key_equal(a, b))
+            return true;
+    }
+    else
+    {
+      order.resize(count);
+      std::iota(order.begin(), order.end(), std::size_t(0));
+      std::sort(order.begin(), order.end(), key_less);
+      for(std::size_t k = 1; k < count; ++k)
+        if(key_equal(order[k - 1], order[k]))
+          return true;
+    }
+  }
+  return false;
+}
+
 // 4. Polygons with the same vertex set as an earlier one.
 inline Error_code remove_duplicate_polygons(Polygon_soup& soup, std::vector<std::size_t>& source, bool repair,
                                             std::size_t& removed, const Diagnostic& diagnostic)
 {
   const std::size_t n = soup.number_of_polygons();
+  removed = 0;
+  if(!has_duplicate_polygons(soup))
+    return Error_code::SUCCESS;
   std::vector<std::vector<std::size_t> > keys(n);
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -196,7 +316,6 @@ inline Error_code remove_duplicate_polygons(Polygon_soup& soup, std::vector<std:
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
   // The sort is stable: the first polygon of a run of equal keys is the earliest one, the one kept.
   std::vector<char> keep(n, 1);
-  removed = 0;
   for(std::size_t k = 1, run = 0; k < n; ++k)
   {
     if(keys[order[k]] != keys[order[run]])
@@ -215,79 +334,103 @@ inline Error_code remove_duplicate_polygons(Polygon_soup& soup, std::vector<std:
   return Error_code::SUCCESS;
 }
 
+// Whether corners a and b of `corners` share a neighbour vertex.
+template <typename Corner>
+bool share_a_neighbour(const Corner& a, const Corner& b)
+{
+  return a.previous == b.previous || a.previous == b.next || a.next == b.previous || a.next == b.next;
+}
+
 // 5. Without repair: the first non-manifold edge, inconsistently oriented
 // edge, or pinched vertex is refused. Returns SUCCESS and sets `manifold`.
+// The edges are visited in the order of their (smaller, larger) vertex ids,
+// then the vertices in id order. Both checks read the corners of the soup
+// grouped by vertex (a counting sort): the check is linear in the size of
+// the soup.
 inline Error_code check_manifold(const Polygon_soup& soup, bool& manifold, const Diagnostic& diagnostic)
 {
-  struct Half
-  {
-    std::size_t a, b, polygon;  // a < b
-    bool forward;               // the polygon runs a -> b
-  };
-  std::vector<Half> halves;
-  halves.reserve(soup.ids.size());
-  for(std::size_t i = 0; i < soup.number_of_polygons(); ++i)
-  {
-    const std::size_t* p = soup.polygon(i);
-    const std::size_t n = soup.size(i);
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      const std::size_t u = p[k], v = p[(k + 1) % n];
-      halves.push_back(Half{ (std::min)(u, v), (std::max)(u, v), i, u < v });
-    }
-  }
-  std::sort(halves.begin(), halves.end(), [](const Half& x, const Half& y) {
-    return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.polygon < y.polygon);
-  });
+  const std::size_t nv = soup.points.size();
+  const std::size_t np = soup.number_of_polygons();
   manifold = true;
-  for(std::size_t k = 0; k < halves.size();)
-  {
-    std::size_t end = k;
-    while(end < halves.size() && halves[end].a == halves[k].a && halves[end].b == halves[k].b)
-      ++end;
-    const std::string edge = "the edge between vertices " + std::to_string(halves[k].a) + " and " + std::to_string(halves[k].b);
-    if(end - k > 2)
-    {
-      manifold = false;
-      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, edge + " is shared by " + std::to_string(end - k) +
-                                                              " faces (" + soup.face_name(halves[k].polygon) + ", " +
-                                                              soup.face_name(halves[k + 1].polygon) + ", " +
-                                                              soup.face_name(halves[k + 2].polygon) +
-                                                              (end - k > 3 ? ", ..." : "") + ")");
-    }
-    if(end - k == 2 && halves[k].forward == halves[k + 1].forward)
-    {
-      manifold = false;
-      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, soup.face_name(halves[k].polygon) + " and " +
-                                                              soup.face_name(halves[k + 1].polygon) +
-                                                              " are oriented inconsistently across " + edge);
-    }
-    k = end;
-  }
-  // Pinched vertices: the corners at a vertex must form one fan, i.e. be
-  // connected through the edges they share.
+
+  // The corners at each vertex, in polygon order.
   struct Corner
   {
-    std::size_t vertex, previous, next;
+    std::size_t previous, next, polygon;
   };
-  std::vector<Corner> corners;
-  corners.reserve(soup.ids.size());
-  for(std::size_t i = 0; i < soup.number_of_polygons(); ++i)
+  std::vector<std::size_t> first(nv + 1, 0);
+  for(std::size_t id : soup.ids)
+    ++first[id + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    first[v + 1] += first[v];
+  std::vector<Corner> corners(soup.ids.size());
   {
-    const std::size_t* p = soup.polygon(i);
-    const std::size_t n = soup.size(i);
-    for(std::size_t k = 0; k < n; ++k)
-      corners.push_back(Corner{ p[k], p[(k + n - 1) % n], p[(k + 1) % n] });
+    std::vector<std::size_t> cursor(first.begin(), first.end() - 1);
+    for(std::size_t i = 0; i < np; ++i)
+    {
+      const std::size_t* p = soup.polygon(i);
+      const std::size_t n = soup.size(i);
+      for(std::size_t k = 0; k < n; ++k)
+        corners[cursor[p[k]]++] = Corner{ p[(k + n - 1) % n], p[(k + 1) % n], i };
+    }
   }
-  std::sort(corners.begin(), corners.end(), [](const Corner& x, const Corner& y) { return x.vertex < y.vertex; });
+
+  // The sides a-b with a < b of the polygons, for each a: the corners at a
+  // give them (a -> next, forward, and previous -> a, backward), sorted by
+  // (b, polygon).
+  struct Half
+  {
+    std::size_t b, polygon;
+    bool forward;  // the polygon runs a -> b
+  };
+  std::vector<Half> halves;
+  for(std::size_t a = 0; a < nv; ++a)
+  {
+    halves.clear();
+    for(std::size_t c = first[a]; c < first[a + 1]; ++c)
+    {
+      if(corners[c].next > a)
+        halves.push_back(Half{ corners[c].next, corners[c].polygon, true });
+      if(corners[c].previous > a)
+        halves.push_back(Half{ corners[c].previous, corners[c].polygon, false });
+    }
+    std::sort(halves.begin(), halves.end(),
+              [](const Half& x, const Half& y) { return x.b != y.b ? x.b < y.b : x.polygon < y.polygon; });
+    for(std::size_t k = 0; k < halves.size();)
+    {
+      std::size_t end = k;
+      while(end < halves.size() && halves[end].b == halves[k].b)
+        ++end;
+      const std::size_t count = end - k;
+      if(count > 2 || (count == 2 && halves[k].forward == halves[k + 1].forward))
+      {
+        manifold = false;
+        const std::string edge = "the edge between vertices " + std::to_string(a) + " and " + std::to_string(halves[k].b);
+        if(count > 2)
+          return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, edge + " is shared by " + std::to_string(count) +
+                                                                  " faces (" + soup.face_name(halves[k].polygon) + ", " +
+                                                                  soup.face_name(halves[k + 1].polygon) + ", " +
+                                                                  soup.face_name(halves[k + 2].polygon) +
+                                                                  (count > 3 ? ", ..." : "") + ")");
+        return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, soup.face_name(halves[k].polygon) + " and " +
+                                                                soup.face_name(halves[k + 1].polygon) +
+                                                                " are oriented inconsistently across " + edge);
+      }
+      k = end;
+    }
+  }
+
+  // Pinched vertices: the corners at a vertex must form one fan, i.e. be
+  // connected through the edges they share (the neighbour vertices they
+  // share).
   std::vector<std::size_t> parent;
   std::vector<std::pair<std::size_t, std::size_t> > ends;  // (neighbour vertex, corner)
-  for(std::size_t k = 0; k < corners.size();)
+  for(std::size_t v = 0; v < nv; ++v)
   {
-    std::size_t end = k;
-    while(end < corners.size() && corners[end].vertex == corners[k].vertex)
-      ++end;
-    const std::size_t count = end - k;
+    const Corner* const at = corners.data() + first[v];
+    const std::size_t count = first[v + 1] - first[v];
+    if(count <= 1)
+      continue;  // one corner (or none) is one fan (or none)
     parent.resize(count);
     std::iota(parent.begin(), parent.end(), std::size_t(0));
     auto find = [&](std::size_t x) {
@@ -295,27 +438,35 @@ inline Error_code check_manifold(const Polygon_soup& soup, bool& manifold, const
         x = parent[x] = parent[parent[x]];
       return x;
     };
-    ends.clear();
-    for(std::size_t c = 0; c < count; ++c)
+    if(count <= 16)
     {
-      ends.emplace_back(corners[k + c].previous, c);
-      ends.emplace_back(corners[k + c].next, c);
+      for(std::size_t a = 0; a < count; ++a)
+        for(std::size_t b = a + 1; b < count; ++b)
+          if(share_a_neighbour(at[a], at[b]))
+            parent[find(b)] = find(a);
     }
-    std::sort(ends.begin(), ends.end());
-    for(std::size_t e = 1; e < ends.size(); ++e)
-      if(ends[e].first == ends[e - 1].first)
-        parent[find(ends[e].second)] = find(ends[e - 1].second);
+    else
+    {
+      ends.clear();
+      for(std::size_t c = 0; c < count; ++c)
+      {
+        ends.emplace_back(at[c].previous, c);
+        ends.emplace_back(at[c].next, c);
+      }
+      std::sort(ends.begin(), ends.end());
+      for(std::size_t e = 1; e < ends.size(); ++e)
+        if(ends[e].first == ends[e - 1].first)
+          parent[find(ends[e].second)] = find(ends[e - 1].second);
+    }
     std::size_t fans = 0;
     for(std::size_t c = 0; c < count; ++c)
       fans += (find(c) == c) ? 1 : 0;
     if(fans > 1)
     {
       manifold = false;
-      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, soup.vertex_name(corners[k].vertex) +
-                                                              " is pinched: its faces form " + std::to_string(fans) +
-                                                              " separate fans");
+      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, soup.vertex_name(v) + " is pinched: its faces form " +
+                                                              std::to_string(fans) + " separate fans");
     }
-    k = end;
   }
   return Error_code::SUCCESS;
 }

@@ -27,6 +27,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +84,20 @@ template <typename Integer>
 Token_status parse_integer(std::string_view token, Integer& value)
 {
   static_assert(std::numeric_limits<Integer>::is_integer, "parse_integer needs an integer type");
+  // The common case first: at most 18 digits (no overflow of the
+  // accumulator), no sign, a value that fits.
+  if(!token.empty() && token.size() <= 18)
+  {
+    unsigned long long magnitude = 0;
+    std::size_t i = 0;
+    for(; i < token.size() && is_digit(token[i]); ++i)
+      magnitude = magnitude * 10 + unsigned(token[i] - '0');
+    if(i == token.size() && magnitude <= static_cast<unsigned long long>((std::numeric_limits<Integer>::max)()))
+    {
+      value = Integer(magnitude);
+      return Token_status::OK;
+    }
+  }
   std::string_view digits = token;
   bool negative = false;
   if(!digits.empty() && (digits.front() == '+' || digits.front() == '-'))
@@ -133,6 +149,22 @@ inline Token_status parse_double(std::string_view token, double& value)
     negative = (body.front() == '-');
     body.remove_prefix(1);
   }
+#ifdef CGAL_PVF_IO_FLOATING_POINT_CHARCONV
+  // The common case first. A body that starts with a digit or a point and
+  // that from_chars reads whole, to a finite value, is one of the grammar
+  // below (from_chars takes the same decimal grammar, and no "inf" or "nan"
+  // that starts so), and the value is the one the full path gives.
+  if(!body.empty() && (is_digit(body.front()) || body.front() == '.'))
+  {
+    double magnitude = 0;
+    const auto result = std::from_chars(body.data(), body.data() + body.size(), magnitude, std::chars_format::general);
+    if(result.ec == std::errc() && result.ptr == body.data() + body.size() && std::isfinite(magnitude))
+    {
+      value = negative ? -magnitude : magnitude;
+      return Token_status::OK;
+    }
+  }
+#endif
   if(equals_ignoring_case(body, "nan") || equals_ignoring_case(body, "inf") ||
      equals_ignoring_case(body, "infinity"))
     return Token_status::NON_FINITE;
@@ -265,6 +297,19 @@ enum class Read_status
 // Reads what is left of `is` into `text`, at most `limit` bytes, in chunks, so
 // that an endless input (/dev/zero, a pipe) is refused after `limit` bytes, and
 // a text input holding a NUL byte (binary data) after the chunk that holds it.
+// Appends a chunk of `count` bytes read to `result`, with the checks of a
+// bounded read: no NUL byte in a text format, at most `limit` bytes in all.
+inline Read_status append_chunk(const char* buffer, std::size_t count, std::size_t limit, bool text_only,
+                                std::string& result)
+{
+  if(text_only && std::memchr(buffer, '\0', count) != nullptr)
+    return Read_status::BINARY;
+  if(count > limit - (std::min)(limit, result.size()))
+    return Read_status::TOO_LARGE;
+  result.append(buffer, count);
+  return Read_status::OK;
+}
+
 inline Read_status read_bounded(std::istream& is, std::size_t limit, bool text_only, std::string& text)
 {
   if(!is.good())
@@ -277,11 +322,9 @@ inline Read_status read_bounded(std::istream& is, std::size_t limit, bool text_o
     const std::size_t count = std::size_t(is.gcount());
     if(count > 0)
     {
-      if(text_only && std::memchr(buffer, '\0', count) != nullptr)
-        return Read_status::BINARY;
-      if(count > limit - (std::min)(limit, result.size()))
-        return Read_status::TOO_LARGE;
-      result.append(buffer, count);
+      const Read_status status = append_chunk(buffer, count, limit, text_only, result);
+      if(status != Read_status::OK)
+        return status;
     }
     if(is.bad())
       return Read_status::CANNOT_OPEN;
@@ -304,16 +347,47 @@ inline Read_status read_file_bounded(const std::string& filename, std::size_t li
     return Read_status::MISSING;
   if(fs::is_directory(path, ec))
     return Read_status::DIRECTORY;  // opening a directory may succeed, reading it fails
+  std::uintmax_t size = 0;
   if(fs::is_regular_file(path, ec))
   {
-    const auto size = fs::file_size(path, ec);
-    if(!ec && size > limit)
+    size = fs::file_size(path, ec);
+    if(ec)
+      size = 0;
+    else if(size > limit)
       return Read_status::TOO_LARGE;
   }
-  std::ifstream in(filename, std::ios::in | std::ios::binary);
-  if(!in)
+  // The bytes of a regular file in one read into a string of its size, then
+  // in chunks whatever follows (a file that grew, or a special file of size
+  // 0), with the checks of read_bounded().
+  std::FILE* file = std::fopen(filename.c_str(), "rb");
+  if(file == nullptr)
     return Read_status::CANNOT_OPEN;
-  return read_bounded(in, limit, text_only, text);
+  struct Closer
+  {
+    std::FILE* file;
+    ~Closer() { std::fclose(file); }
+  } closer{ file };
+  std::string result;
+  result.resize(std::size_t(size));
+  std::size_t count = size == 0 ? 0 : std::fread(&result[0], 1, result.size(), file);
+  result.resize(count);
+  if(text_only && count > 0 && std::memchr(result.data(), '\0', count) != nullptr)
+    return Read_status::BINARY;
+  char buffer[1 << 16];
+  while(!std::ferror(file) && !std::feof(file))
+  {
+    count = std::fread(buffer, 1, sizeof(buffer), file);
+    if(count > 0)
+    {
+      const Read_status status = append_chunk(buffer, count, limit, text_only, result);
+      if(status != Read_status::OK)
+        return status;
+    }
+  }
+  if(std::ferror(file))
+    return Read_status::CANNOT_OPEN;
+  text = std::move(result);
+  return Read_status::OK;
 }
 
 // A text cut into lines at '\n' ('\r' is blank), and lines into tokens at

@@ -151,6 +151,11 @@ inline bool triangulate_polygon(const std::vector<std::array<double, 3> >& point
 inline Error_code triangulate_soup_polygons(Polygon_soup& soup, std::vector<std::size_t>& source,
                                             std::size_t& triangulated, const Diagnostic& diagnostic)
 {
+  triangulated = 0;
+  // Every polygon has at least 3 vertices: 3 per polygon means triangles only,
+  // and nothing to do.
+  if(soup.ids.size() == 3 * soup.number_of_polygons())
+    return Error_code::SUCCESS;
   Polygon_soup result;
   result.points = soup.points;
   result.point_line = soup.point_line;

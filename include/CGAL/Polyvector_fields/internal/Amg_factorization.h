@@ -1,0 +1,264 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_AMG_FACTORIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_AMG_FACTORIZATION_H
+
+// The factorization protocol of internal/Factorization.h for
+// Amg_sparse_solver (conjugate gradient preconditioned by
+// internal/Smoothed_aggregation.h):
+//
+//   share_analysis(s)  all blocks of a system share the structure of the
+//                      hierarchy (aggregates, spanning trees, patterns of the
+//                      prolongators and of every Galerkin operator), which
+//                      depends on the pattern only;
+//   analyze(A)         the first call on a shared structure builds it (not
+//                      concurrently with the others); a later call with another
+//                      pattern gets a structure of its own;
+//   factorize(A)       the numeric setup: A's values, the phases, the damping,
+//                      the smoothed prolongators, the Galerkin operators and the
+//                      dense factor of the coarsest level. A later factorize (new
+//                      values, same pattern) recomputes what Parameters::reuse says;
+//   solve(b, x)        CG to ||b - A x|| <= tolerance ||b|| (true residual), from
+//                      the previous solution when warm_start and it is closer;
+//                      if CG does not converge, a direct factorization of the
+//                      same matrix finishes the solve.
+
+#include <CGAL/Polyvector_fields/Amg_solver.h>
+#include <CGAL/Polyvector_fields/internal/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/Smoothed_aggregation.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+template <>
+class Factorization<Amg_sparse_solver>
+{
+public:
+  typedef amg::Structure Shared_analysis;
+  struct Solver_scope
+  {};
+  // Each factorization owns its values; the shared structure is only read once built.
+  static constexpr bool is_thread_safe = true;
+  static constexpr bool keeps_matrix = false;  // the values are copied into the hierarchy
+
+  explicit Factorization(const Amg_sparse_solver& solver = Amg_sparse_solver())
+    : m_parameters(solver.parameters()), m_statistics(solver.statistics_sink())
+  {}
+  Factorization(const Factorization&) = delete;
+  Factorization& operator=(const Factorization&) = delete;
+
+  void share_analysis(const std::shared_ptr<Shared_analysis>& s) { m_structure = s; }
+
+  bool analyze(const Sparse_matrix& A)
+  {
+    amg::Timer timer;
+    if(!A.isCompressed() || A.rows() != A.cols())
+      return false;
+    if(!m_structure)
+      m_structure = std::make_shared<Shared_analysis>();
+    const std::uint64_t fingerprint = pattern_fingerprint(A);
+    if(m_structure->computed && m_structure->input_fingerprint != fingerprint)
+      m_structure = std::make_shared<Shared_analysis>();
+    const bool built = !m_structure->computed;
+    if(built)
+    {
+      amg::Pattern fine;
+      fine.rows = fine.cols = int(A.rows());
+      fine.ptr.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+      fine.idx.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+      // A Hermitian pattern is symmetric: its columns are its rows.
+      amg::build_structure(std::move(fine), m_parameters, *m_structure);
+      m_structure->input_fingerprint = fingerprint;
+    }
+    m_hierarchy.reset(new amg::Hierarchy);
+    m_hierarchy->structure = m_structure.get();
+    m_hierarchy->sweeps = m_parameters.sweeps;
+    m_factored = false;
+    m_fresh_iterations = -1;
+    m_last_iterations = 0;
+    m_last.resize(0);
+    if(built)
+    {
+      const double seconds = timer.elapsed();
+      std::vector<int> sizes;
+      for(const auto& L : m_structure->levels)
+        sizes.push_back(L.A.rows);
+      report([&](Amg_statistics& s) {
+        ++s.analyses;
+        s.analysis_seconds += seconds;
+        s.level_sizes = sizes;
+      });
+    }
+    return true;
+  }
+
+  bool factorize(const Sparse_matrix& A)
+  {
+    amg::Timer timer;
+    if(!m_hierarchy || !A.isCompressed() || pattern_fingerprint(A) != m_structure->input_fingerprint)
+      return false;
+    const bool first = m_hierarchy->levels.empty() || !m_factored;
+    if(m_hierarchy->levels.empty())
+      m_hierarchy->levels.resize(1);
+    // The hierarchy stores rows; row i of a Hermitian matrix is the conjugate
+    // of its column i.
+    std::vector<Complex>& a = m_hierarchy->levels[0].a;
+    a.resize(std::size_t(A.nonZeros()));
+    const Complex* v = A.valuePtr();
+    const std::vector<int>& map = m_structure->input_map;
+    if(map.empty())
+      for(std::size_t k = 0; k < a.size(); ++k)
+        a[k] = std::conj(v[k]);
+    else
+      for(std::size_t k = 0; k < a.size(); ++k)
+        a[k] = std::conj(v[map[k]]);
+    // reuse 2: keep the coarse levels while CG needs at most 30% (and 2) more
+    // iterations than right after the last whole setup.
+    const bool stale = m_last_iterations > m_fresh_iterations + (std::max)(2, (3 * m_fresh_iterations) / 10);
+    bool ok;
+    bool reused = false;
+    if(!first && m_parameters.reuse == 2 && !stale)
+    {
+      ok = m_hierarchy->refresh_finest();
+      reused = true;
+    }
+    else
+    {
+      ok = m_hierarchy->setup(m_parameters, !first && m_parameters.reuse >= 1);
+      m_fresh_iterations = -1;  // set by the next solve
+    }
+    m_factored = ok;
+    m_direct.reset();
+    const double seconds = timer.elapsed();
+    report([&](Amg_statistics& s) {
+      if(reused)
+        ++s.reused_setups;
+      else
+        ++s.setups;
+      s.setup_seconds += seconds;
+    });
+    return ok;
+  }
+
+  bool solve(const Dense_vector& b, Dense_vector& x)
+  {
+    amg::Timer timer;
+    if(!m_factored || b.size() != m_hierarchy->structure->levels[0].A.rows)
+      return false;
+    const int n = int(b.size());
+    // In the hierarchy's numbering.
+    const std::vector<int>& perm = m_structure->permutation;
+    Dense_vector bp(n), x0;
+    for(int i = 0; i < n; ++i)
+      bp[i] = perm.empty() ? b[i] : b[perm[std::size_t(i)]];
+    if(!bp.allFinite())
+      return false;
+    // From the last solution (if its residual is below ||b||), else from 0.
+    bool warm = m_parameters.warm_start && m_last.size() == n;
+    if(warm)
+      x0.swap(m_last);
+    else
+      x0.resize(n);
+    double residual = 0;
+    bool converged = false;
+    const int it = amg::pcg(*m_hierarchy, bp.data(), x0.data(), n, m_parameters.tolerance, m_parameters.max_iterations,
+                            residual, converged, warm);
+    if(it < 0)
+      return false;  // not positive definite
+    m_last_iterations = it;
+    if(m_fresh_iterations < 0)
+      m_fresh_iterations = it;
+    if(!converged && !direct_solve(bp, x0))
+      return false;
+    x.resize(n);
+    for(int i = 0; i < n; ++i)
+      x[perm.empty() ? i : perm[std::size_t(i)]] = x0[i];
+    if(m_parameters.warm_start)
+      m_last.swap(x0);
+    const double seconds = timer.elapsed();
+    report([&](Amg_statistics& s) {
+      ++s.solves;
+      s.iterations += std::size_t(it);
+      s.max_iterations = (std::max)(s.max_iterations, std::size_t(it));
+      if(converged)
+        s.max_residual = (std::max)(s.max_residual, residual);
+      else
+        ++s.fallbacks;
+      s.solve_seconds += seconds;
+    });
+    return true;
+  }
+
+private:
+  template <typename Update>
+  void report(const Update& u)
+  {
+    if(m_statistics)
+      m_statistics->update(u);
+  }
+
+  // A hash of the pattern (n, column starts, row indices).
+  static std::uint64_t pattern_fingerprint(const Sparse_matrix& A)
+  {
+    std::uint64_t h = 1469598103934665603ull ^ std::uint64_t(A.rows());
+    const int* p = A.outerIndexPtr();
+    for(Eigen::Index k = 0; k <= A.outerSize(); ++k)
+      h = (h ^ std::uint64_t(p[k])) * 1099511628211ull;
+    const int* i = A.innerIndexPtr();
+    for(Eigen::Index k = 0; k < A.nonZeros(); ++k)
+      h = (h ^ std::uint64_t(i[k])) * 1099511628211ull;
+    return h;
+  }
+
+  // The fallback: a direct factorization of the stored finest matrix (in the
+  // hierarchy's numbering, as b and x are here).
+  bool direct_solve(const Dense_vector& b, Dense_vector& x)
+  {
+    if(!m_direct)
+    {
+      const amg::Pattern& P = m_hierarchy->structure->levels[0].A;
+      const std::vector<Complex>& a = m_hierarchy->levels[0].a;
+      Sparse_matrix A(P.rows, P.rows);
+      A.resizeNonZeros(Eigen::Index(P.nnz()));
+      std::memcpy(A.outerIndexPtr(), P.ptr.data(), P.ptr.size() * sizeof(int));
+      std::memcpy(A.innerIndexPtr(), P.idx.data(), P.idx.size() * sizeof(int));
+      for(std::size_t k = 0; k < a.size(); ++k)
+        A.valuePtr()[k] = std::conj(a[k]);
+      m_direct.reset(new Eigen::SimplicialLDLT<Sparse_matrix>(A));
+      if(m_direct->info() != Eigen::Success)
+        return false;
+    }
+    x = m_direct->solve(b);
+    return m_direct->info() == Eigen::Success;
+  }
+
+  amg::Parameters m_parameters;
+  std::shared_ptr<Amg_statistics_sink> m_statistics;
+  std::shared_ptr<Shared_analysis> m_structure;
+  std::unique_ptr<amg::Hierarchy> m_hierarchy;
+  bool m_factored = false;
+  int m_fresh_iterations = -1, m_last_iterations = 0;
+  Dense_vector m_last;
+  std::unique_ptr<Eigen::SimplicialLDLT<Sparse_matrix> > m_direct;
+};
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_AMG_FACTORIZATION_H

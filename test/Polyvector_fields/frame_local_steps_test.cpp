@@ -9,8 +9,8 @@
 // the projection onto conjugate pairs (NOTES.md Section 5, paper Appendix A)
 // and the angle bound (NOTES.md Section 6, paper Section 4.2).
 
-#include <CGAL/Polyvector_fields/internal/angle_bound_projection.h>
-#include <CGAL/Polyvector_fields/internal/conjugacy_projection.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/conjugacy_projection.h>
 
 #include <gtest/gtest.h>
 

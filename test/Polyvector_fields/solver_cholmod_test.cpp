@@ -21,8 +21,8 @@
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
 #include <CGAL/Polyvector_fields/conjugate_frame_field.h>
-#include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
-#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

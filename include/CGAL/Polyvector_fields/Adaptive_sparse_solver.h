@@ -14,7 +14,7 @@
 /// multigrid-preconditioned conjugate gradient for large ones.
 
 #include <CGAL/Polyvector_fields/Amg_solver.h>
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Eigen_sparse_matrix.h>

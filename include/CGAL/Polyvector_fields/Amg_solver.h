@@ -13,7 +13,7 @@
 /// An iterative solver whose cost grows linearly with the mesh: conjugate
 /// gradient preconditioned by smoothed-aggregation multigrid.
 
-#include <CGAL/Polyvector_fields/internal/Smoothed_aggregation.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Smoothed_aggregation.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Eigen_sparse_matrix.h>
@@ -210,7 +210,7 @@ private:
 } // namespace CGAL
 
 // The factorization behind the class (it needs the class complete).
-#include <CGAL/Polyvector_fields/internal/Amg_factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Amg_factorization.h>
 
 namespace CGAL {
 namespace Polyvector_fields {

@@ -27,7 +27,7 @@
 
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 
-#include <CGAL/Polyvector_fields/internal/Cholmod_factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Cholmod_factorization.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 

@@ -15,8 +15,8 @@
 #include <CGAL/Polyvector_fields/Face_constraint.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
-#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 

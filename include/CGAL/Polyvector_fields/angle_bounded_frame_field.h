@@ -12,8 +12,8 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/internal/Local_global_driver.h>
-#include <CGAL/Polyvector_fields/internal/angle_bound_projection.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/Local_global_driver.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -14,8 +14,8 @@
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
-#include <CGAL/Polyvector_fields/internal/Local_global_driver.h>
-#include <CGAL/Polyvector_fields/internal/conjugacy_projection.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/Local_global_driver.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/conjugacy_projection.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -15,7 +15,7 @@
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/face_frames.h>
-#include <CGAL/Polyvector_fields/internal/curvature_tensor.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/curvature_tensor.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/Eigen_svd.h>

@@ -17,7 +17,7 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
-#include <CGAL/Polyvector_fields/internal/qex_chart_mesh.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/qex_chart_mesh.h>
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>

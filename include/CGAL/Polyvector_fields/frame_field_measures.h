@@ -14,10 +14,10 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/internal/angle_bound_projection.h>
-#include <CGAL/Polyvector_fields/internal/conjugacy_projection.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/conjugacy_projection.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
-#include <CGAL/Polyvector_fields/internal/frame_field_polynomial.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/frame_field_polynomial.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

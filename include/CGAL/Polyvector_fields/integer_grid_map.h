@@ -17,8 +17,8 @@
 
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/comb_frame_field.h>
-#include <CGAL/Polyvector_fields/internal/mixed_integer_solve.h>
-#include <CGAL/Polyvector_fields/internal/seamless_reduction.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/mixed_integer_solve.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/seamless_reduction.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -12,7 +12,7 @@
 /// Conversion between a PolyVector (an unordered set of `N` complex numbers)
 /// and the coefficients of its monic polynomial.
 
-#include <CGAL/Polyvector_fields/internal/polynomial_roots.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/polynomial_roots.h>
 
 #include <CGAL/assertions.h>
 

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_CHOLMOD_FACTORIZATION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_CHOLMOD_FACTORIZATION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_CHOLMOD_FACTORIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_CHOLMOD_FACTORIZATION_H
 
 // The package's Factorization for `Cholmod_sparse_solver`, driving CHOLMOD's C
 // interface directly rather than through Eigen's wrapper, for two reasons:
@@ -23,7 +23,7 @@
 // between simplicial LDL^* and supernodal LL^* (by the ratio of flops to
 // factor entries), as in Eigen's `CholmodDecomposition` default mode.
 
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -283,4 +283,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_CHOLMOD_FACTORIZATION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_CHOLMOD_FACTORIZATION_H

@@ -46,8 +46,8 @@
 // Everything is sequential inside one hierarchy and deterministic: two runs on
 // the same matrix give bit-identical results whatever the thread.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SMOOTHED_AGGREGATION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SMOOTHED_AGGREGATION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_SMOOTHED_AGGREGATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_SMOOTHED_AGGREGATION_H
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -1174,4 +1174,4 @@ inline int pcg(Hierarchy& H, const Complex* b, Complex* x, int n, double toleran
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SMOOTHED_AGGREGATION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_SMOOTHED_AGGREGATION_H

@@ -9,8 +9,8 @@
 // face, exact transitions, vertex fans, exact sector tests, fold-over repair).
 // Written from Ebke, Bommes, Campen, Kobbelt 2013 (QEx), not from its code.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_QEX_CHART_MESH_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_QEX_CHART_MESH_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_QEX_CHART_MESH_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_QEX_CHART_MESH_H
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
@@ -860,4 +860,4 @@ inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_o
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_QEX_CHART_MESH_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_QEX_CHART_MESH_H

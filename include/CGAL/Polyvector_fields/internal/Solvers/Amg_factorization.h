@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_AMG_FACTORIZATION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_AMG_FACTORIZATION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_AMG_FACTORIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_AMG_FACTORIZATION_H
 
 // The factorization protocol of internal/Factorization.h for
 // Amg_sparse_solver (conjugate gradient preconditioned by
@@ -29,8 +29,8 @@
 //                      same matrix finishes the solve.
 
 #include <CGAL/Polyvector_fields/Amg_solver.h>
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
-#include <CGAL/Polyvector_fields/internal/Smoothed_aggregation.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Smoothed_aggregation.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <Eigen/Sparse>
@@ -261,4 +261,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_AMG_FACTORIZATION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_AMG_FACTORIZATION_H

@@ -30,8 +30,8 @@
 // (it is implied by the others in every test so far; if not, it is eliminated
 // on a unit coefficient when there is one).
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SEAMLESS_REDUCTION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SEAMLESS_REDUCTION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_REDUCTION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_REDUCTION_H
 
 #include <CGAL/Polyvector_fields/comb_frame_field.h>
 
@@ -417,4 +417,4 @@ double seam_residual(const CornerMesh& M, const Comb_data& D, const std::vector<
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SEAMLESS_REDUCTION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_REDUCTION_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELD_POLYNOMIAL_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELD_POLYNOMIAL_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_FRAME_FIELD_POLYNOMIAL_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_FRAME_FIELD_POLYNOMIAL_H
 
 // A frame {u, v, -u, -v} and its polynomial (z^2 - u^2)(z^2 - v^2) =
 // z^4 + c_2 z^2 + c_0, with c_0 = u^2 v^2 and c_2 = -(u^2 + v^2) (paper
@@ -43,4 +43,4 @@ inline void frame_coefficients(const std::complex<double>& u, const std::complex
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELD_POLYNOMIAL_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_FRAME_FIELD_POLYNOMIAL_H

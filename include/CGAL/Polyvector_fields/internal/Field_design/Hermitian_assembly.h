@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_HERMITIAN_ASSEMBLY_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_HERMITIAN_ASSEMBLY_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_HERMITIAN_ASSEMBLY_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_HERMITIAN_ASSEMBLY_H
 
 // The sinks of Quadratic_energy::enumerate_terms(): each accumulates a term
 // |alpha . x + gamma|^2 into the Hermitian normal equations M x = r, with
@@ -120,4 +120,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_HERMITIAN_ASSEMBLY_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_HERMITIAN_ASSEMBLY_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SMOOTHEST_ROSY_FIELD_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SMOOTHEST_ROSY_FIELD_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_SMOOTHEST_ROSY_FIELD_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_SMOOTHEST_ROSY_FIELD_H
 
 // The field of a connected component without any constraint: the smoothest
 // unit-length N-RoSy field, i.e. the eigenvector of the smallest eigenvalue of
@@ -15,7 +15,7 @@
 // iteration on the Laplacian shifted by a tiny multiple of the identity (so
 // that a flat component, whose smallest eigenvalue is 0, can be factored).
 
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <Eigen/Sparse>
@@ -108,4 +108,4 @@ bool smoothest_rosy_fields(const Bundle& bundle, std::size_t N, const std::vecto
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SMOOTHEST_ROSY_FIELD_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_SMOOTHEST_ROSY_FIELD_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_POLYNOMIAL_ROOTS_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_POLYNOMIAL_ROOTS_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_POLYNOMIAL_ROOTS_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_POLYNOMIAL_ROOTS_H
 
 // Root finding for the monic polynomials that represent PolyVectors.
 //
@@ -711,4 +711,4 @@ inline void companion_roots(const Complex* c, std::size_t N, Complex* roots,
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_POLYNOMIAL_ROOTS_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_POLYNOMIAL_ROOTS_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_LOCAL_GLOBAL_DRIVER_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_LOCAL_GLOBAL_DRIVER_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_LOCAL_GLOBAL_DRIVER_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_LOCAL_GLOBAL_DRIVER_H
 
 // The local-global iterations of the frame-field algorithms (paper Section 4):
 // from the smoothest frame field of the constraints, alternate
@@ -26,10 +26,10 @@
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
-#include <CGAL/Polyvector_fields/internal/Coefficient_system.h>
-#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
-#include <CGAL/Polyvector_fields/internal/frame_field_polynomial.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/frame_field_polynomial.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -253,4 +253,4 @@ auto make_local_global_driver(const Bundle& bundle, const NamedParameters& np)
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_LOCAL_GLOBAL_DRIVER_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_LOCAL_GLOBAL_DRIVER_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_MIXED_INTEGER_SOLVE_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_MIXED_INTEGER_SOLVE_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_MIXED_INTEGER_SOLVE_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_MIXED_INTEGER_SOLVE_H
 
 // The least-squares problem of the integer-grid map with integer unknowns
 // (compute_integer_grid_map()): minimise |W^(1/2) (B y - d)|^2 over
@@ -279,4 +279,4 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_MIXED_INTEGER_SOLVE_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_MIXED_INTEGER_SOLVE_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_CONSTRAINT_SPECIFICATION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_CONSTRAINT_SPECIFICATION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_CONSTRAINT_SPECIFICATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_CONSTRAINT_SPECIFICATION_H
 
 // From a constraint in world coordinates to what it asks of the coefficients
 // (`Face_specification`), the degrees a set of specifications leaves active,
@@ -307,4 +307,4 @@ inline bool same_matrices(const Specifications& a, const Specifications& b)
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_CONSTRAINT_SPECIFICATION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_CONSTRAINT_SPECIFICATION_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FACTORIZATION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FACTORIZATION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_FACTORIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_FACTORIZATION_H
 
 // One sparse Hermitian factorization behind a model of CGAL's
 // `SparseLinearAlgebraWithFactorTraits_d`.
@@ -223,4 +223,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FACTORIZATION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_FACTORIZATION_H

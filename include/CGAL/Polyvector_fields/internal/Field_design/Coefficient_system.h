@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_COEFFICIENT_SYSTEM_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_COEFFICIENT_SYSTEM_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_COEFFICIENT_SYSTEM_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_COEFFICIENT_SYSTEM_H
 
 // The minimisation of the quadratic energy in the PolyVector coefficients
 // (internal/Quadratic_energy.h) under the hard constraints, on a tangent
@@ -24,12 +24,12 @@
 // Every failure (a null space, a factorization, a solve, a non-finite result)
 // is reported as false.
 
-#include <CGAL/Polyvector_fields/internal/Block_factorizations.h>
-#include <CGAL/Polyvector_fields/internal/Hermitian_assembly.h>
-#include <CGAL/Polyvector_fields/internal/Quadratic_energy.h>
-#include <CGAL/Polyvector_fields/internal/Unknown_layout.h>
-#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
-#include <CGAL/Polyvector_fields/internal/smoothest_rosy_field.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Block_factorizations.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Hermitian_assembly.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Quadratic_energy.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Unknown_layout.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/smoothest_rosy_field.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <cmath>
@@ -240,4 +240,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_COEFFICIENT_SYSTEM_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_COEFFICIENT_SYSTEM_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_BLOCK_FACTORIZATIONS_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_BLOCK_FACTORIZATIONS_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_BLOCK_FACTORIZATIONS_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_BLOCK_FACTORIZATIONS_H
 
 // The factorizations of the blocks of one linear system (one per coefficient
 // degree, or one for coupled degrees). All blocks have one sparsity pattern:
@@ -16,7 +16,7 @@
 // computed by the same operations whatever the thread, so a parallel run is
 // bit-identical to a sequential one.
 
-#include <CGAL/Polyvector_fields/internal/Factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -112,4 +112,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_BLOCK_FACTORIZATIONS_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_BLOCK_FACTORIZATIONS_H

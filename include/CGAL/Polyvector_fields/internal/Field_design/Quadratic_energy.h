@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_QUADRATIC_ENERGY_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_QUADRATIC_ENERGY_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_QUADRATIC_ENERGY_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_QUADRATIC_ENERGY_H
 
 // The energy in the PolyVector coefficients, as a sum of terms
 // |sum_j alpha_j x_j + gamma|^2 in the unknowns x of an Unknown_layout:
@@ -24,8 +24,8 @@
 // (internal/Hermitian_assembly.h), which accumulates it into the normal
 // equations.
 
-#include <CGAL/Polyvector_fields/internal/Unknown_layout.h>
-#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/Unknown_layout.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <cmath>
@@ -227,4 +227,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_QUADRATIC_ENERGY_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_QUADRATIC_ENERGY_H

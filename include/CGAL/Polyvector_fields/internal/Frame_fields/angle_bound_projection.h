@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_ANGLE_BOUND_PROJECTION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_ANGLE_BOUND_PROJECTION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_ANGLE_BOUND_PROJECTION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_ANGLE_BOUND_PROJECTION_H
 
 // Local step of the angle-bounded frame-field iterations (paper Section 4.2;
 // the user manual's section "Angle-bounded frame fields"), as per-face arithmetic on the two vectors u, v of a
@@ -84,4 +84,4 @@ enforce_angle_bound(std::complex<double> u, std::complex<double> v, double theta
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_ANGLE_BOUND_PROJECTION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_ANGLE_BOUND_PROJECTION_H

@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_UNKNOWN_LAYOUT_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_UNKNOWN_LAYOUT_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_UNKNOWN_LAYOUT_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_UNKNOWN_LAYOUT_H
 
 // The unknowns of the linear system: which coefficients are free, and how
 // every coefficient c_{f,q} (face f, slot q of the active degrees) is an
@@ -24,7 +24,7 @@
 // A component whose constraints are all partial may leave a null space; it is
 // marked `regularised`, and the energy adds a tiny multiple of |unknowns|^2.
 
-#include <CGAL/Polyvector_fields/internal/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <Eigen/Dense>
@@ -231,4 +231,4 @@ private:
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_UNKNOWN_LAYOUT_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_UNKNOWN_LAYOUT_H

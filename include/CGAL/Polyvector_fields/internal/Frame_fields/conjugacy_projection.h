@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_CONJUGACY_PROJECTION_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_CONJUGACY_PROJECTION_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_CONJUGACY_PROJECTION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_CONJUGACY_PROJECTION_H
 
 // Local step of the conjugate frame-field iterations (paper Section 4.3 and
 // Appendix A; the user manual's section "Conjugate frame fields"): the projection of a pair of tangent vectors
@@ -16,7 +16,7 @@
 // Everything here is per-face arithmetic in the face's orthonormal frame; no
 // mesh is involved. A complex number x + iy is the vector (x, y) of the frame.
 
-#include <CGAL/Polyvector_fields/internal/curvature_tensor.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/curvature_tensor.h>
 
 #include <CGAL/assertions.h>
 
@@ -455,4 +455,4 @@ project_onto_conjugate_pair(const std::array<double, 4>& S_row_major,
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_CONJUGACY_PROJECTION_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_CONJUGACY_PROJECTION_H

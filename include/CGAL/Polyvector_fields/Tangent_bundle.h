@@ -22,12 +22,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/blocked_range.h>
-#  include <tbb/parallel_for.h>
-#  include <tbb/parallel_invoke.h>
-#endif
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 
 #include <algorithm>
 #include <atomic>
@@ -52,72 +47,6 @@ face_of(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const
 {
   return face(h, tm);
 }
-
-// Whether `T` is one of CGAL's concurrency tags (`Sequential_tag`, `Parallel_tag`,
-// `Parallel_if_available_tag`).
-template <typename T>
-struct Is_concurrency_tag : std::is_convertible<T, CGAL::Sequential_tag> {};
-
-// Calls `range(begin, end)` on consecutive ranges that cover 0 .. n-1 once:
-// with `CGAL::Parallel_tag` (and TBB), on several threads, in ranges of about
-// `grain` indices; otherwise once on the calling thread. `range` must treat
-// each index independently of the others, so that the result does not depend
-// on how the indices are split.
-template <typename ConcurrencyTag, typename Range>
-void for_each_range(std::size_t n, std::size_t grain, const Range& range)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && n > grain)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                      [&range](const tbb::blocked_range<std::size_t>& r) { range(r.begin(), r.end()); });
-    return;
-  }
-#else
-  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-  range(std::size_t(0), n);
-}
-
-// Calls `a()` and `b()`: with `CGAL::Parallel_tag` (and TBB) at the same time,
-// otherwise one after the other. They must not write the same data.
-template <typename ConcurrencyTag, typename A, typename B>
-void invoke_both(const A& a, const B& b)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_invoke(a, b);
-    return;
-  }
-#endif
-  a();
-  b();
-}
-
-// An allocator that leaves the elements of `resize(n)` default-initialised
-// (uninitialised for a trivial type), so that a vector is first written, and
-// its memory first touched, by the threads that compute it.
-template <typename T>
-struct Uninitialized_allocator : std::allocator<T>
-{
-  template <typename U>
-  struct rebind { typedef Uninitialized_allocator<U> other; };
-  Uninitialized_allocator() = default;
-  template <typename U>
-  Uninitialized_allocator(const Uninitialized_allocator<U>&) noexcept {}
-  template <typename U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
-  {
-    ::new(static_cast<void*>(p)) U;
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
 
 } // namespace internal
 

@@ -15,7 +15,8 @@
 
 #include <Eigen/Sparse>
 
-#include <chrono>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
+
 #include <complex>
 #include <cstddef>
 
@@ -33,12 +34,6 @@ constexpr double two_pi = 2 * CGAL_PI;
 struct Stage_times
 {
   double assembly = 0, factorization = 0, solve = 0;
-};
-
-struct Timer
-{
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
 };
 
 } // namespace internal

@@ -66,7 +66,7 @@ public:
 
   bool analyze(const Sparse_matrix& A)
   {
-    amg::Timer timer;
+    Timer timer;
     if(!A.isCompressed() || A.rows() != A.cols())
       return false;
     if(!m_structure)
@@ -109,7 +109,7 @@ public:
 
   bool factorize(const Sparse_matrix& A)
   {
-    amg::Timer timer;
+    Timer timer;
     if(!m_hierarchy || !A.isCompressed() || pattern_fingerprint(A) != m_structure->input_fingerprint)
       return false;
     const bool first = m_hierarchy->levels.empty() || !m_factored;
@@ -157,7 +157,7 @@ public:
 
   bool solve(const Dense_vector& b, Dense_vector& x)
   {
-    amg::Timer timer;
+    Timer timer;
     if(!m_factored || b.size() != m_hierarchy->structure->levels[0].A.rows)
       return false;
     const int n = int(b.size());

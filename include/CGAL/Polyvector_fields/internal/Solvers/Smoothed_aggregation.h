@@ -52,6 +52,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <CGAL/Polyvector_fields/internal/parallel.h>
+
 #ifdef CGAL_LINKED_WITH_TBB
 #  include <tbb/parallel_for.h>
 #endif
@@ -162,12 +164,6 @@ struct Structure
       b += l.bytes();
     return b + (permutation.size() + input_map.size()) * sizeof(int);
   }
-};
-
-struct Timer
-{
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
 };
 
 // Independent chunks of rows, run in parallel when TBB is linked (each row is

@@ -870,7 +870,8 @@ typedef Mesh::Property_map<Face, std::vector<Complex> > Coefficient_map;
 
 struct Field
 {
-  Coefficient_map coefficients;
+  std::optional<PVF::Polyvector_field<Bundle> > polyvector;  // designed once, then optimised in place
+  Coefficient_map coefficients;  // the final field as a property map, for the writers
   PVF::Design_statistics statistics;
   PVF::Default_sparse_solver solver;  // its multigrid statistics cover every stage
   std::size_t components = 0;
@@ -924,8 +925,9 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
       throw Failure(constraint_failure(code, c, o));
     (c.vectors.size() == o.vectors_per_constraint() ? field.full : field.partial) += 1;
   }
-  field.coefficients = tm.add_property_map<Face, std::vector<Complex> >("f:pvf_coefficients").first;
-  const PVF::Error_code solved = designer.solve(field.coefficients);
+  field.polyvector.emplace(bundle, o.degree, o.sign_symmetric);
+  PVF::Polyvector_field<Bundle>& pvf = *field.polyvector;
+  const PVF::Error_code solved = designer.solve(pvf);
   check(solved, "design",
         solved != PVF::Error_code::VALUE_OUT_OF_RANGE
           ? std::string()
@@ -936,8 +938,7 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
   // The energy before an optimisation (the summary gives both); without one,
   // analyse_field() measures the field once.
   if(o.angle_bound_degrees > 0 || o.conjugate)
-    field.smooth_energy = PVF::smoothness_energy(bundle, o.degree, field.coefficients,
-                                                 PVF::parameters::smoothness_weights(o.weights));
+    field.smooth_energy = PVF::smoothness_energy(pvf);
 
   std::ostringstream report;
   if(o.angle_bound_degrees > 0)
@@ -948,10 +949,11 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
       o.angle_bound_degrees * CGAL_PI / 180,
       PVF::parameters::tolerance(tolerance, PVF::parameters::smoothness_weights(
                                               o.weights, CGAL::parameters::sparse_linear_solver(field.solver))));
-    check(o.iterations ? PVF::design_angle_bounded_frame_field(bundle, constraints.list, field.coefficients, result,
-                                                                np.number_of_iterations(o.iterations))
-                       : PVF::design_angle_bounded_frame_field(bundle, constraints.list, field.coefficients, result, np),
-          "angle bound");
+    // Not reaching the bound within the iterations is reported, not fatal.
+    const PVF::Error_code code = o.iterations ? PVF::design_angle_bounded_frame_field(pvf, result, np.number_of_iterations(o.iterations))
+                                              : PVF::design_angle_bounded_frame_field(pvf, result, np);
+    if(code != PVF::Error_code::DID_NOT_CONVERGE)
+      check(code, "angle bound");
     report << "angle bound     " << o.angle_bound_degrees << " degrees (to within " << tolerance * 180 / CGAL_PI
            << "): " << (result.converged ? "converged" : "NOT converged")
            << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
@@ -979,7 +981,10 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
                                                                              o.iterations ? o.iterations
                                                                                           : defaults.iterations)
                                                                              .sparse_linear_solver(field.solver)))))));
-    check(PVF::design_conjugate_frame_field(bundle, constraints.list, field.coefficients, result, np), "conjugate field");
+    // Not meeting the stopping rule within the iterations is reported, not fatal.
+    const PVF::Error_code code = PVF::design_conjugate_frame_field(pvf, result, np);
+    if(code != PVF::Error_code::DID_NOT_CONVERGE)
+      check(code, "conjugate field");
     report << "conjugate       " << (result.converged ? "converged" : "NOT converged") << " in " << result.iterations
            << " iterations (orthogonality weight " << o.orthogonality << ", last lambda " << result.final_lambda
            << "); mean deviation |u^T S v| / (|u| |v| max|k|) of the free faces " << result.deviation_history.front()
@@ -993,6 +998,8 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
     clock.lap("frame field");
   }
   field.frame_report = report.str();
+  field.coefficients = tm.add_property_map<Face, std::vector<Complex> >("f:pvf_coefficients").first;
+  pvf.write_coefficients(field.coefficients);
   return field;
 }
 
@@ -1014,19 +1021,19 @@ Analysis analyse_field(const Options& o, Mesh& tm, const Bundle& bundle, const F
 {
   Analysis a;
   a.roots = tm.add_property_map<Face, std::vector<Vector> >("f:pvf_roots").first;
-  check(PVF::compute_field_roots(bundle, o.degree, field.coefficients, a.roots, PVF::parameters::sign_symmetric(o.sign_symmetric)),
+  check(PVF::compute_field_roots(*field.polyvector, a.roots),
         "roots");
   clock.lap("roots");
-  check(PVF::compute_singularities(bundle, o.degree, field.coefficients, std::back_inserter(a.singularities),
+  check(PVF::compute_singularities(*field.polyvector, std::back_inserter(a.singularities),
                                    std::back_inserter(a.undefined)),
         "singularities");
   clock.lap("singularities");
-  a.energy = PVF::smoothness_energy(bundle, o.degree, field.coefficients, PVF::parameters::smoothness_weights(o.weights));
+  a.energy = PVF::smoothness_energy(*field.polyvector);
   if(o.out_vtk.empty() || !(o.sign_symmetric && o.degree == 4))
     return a;
   // Frame-field diagnostics for the VTK file; they never fail the run.
   auto angle_map = tm.add_property_map<Face, double>("f:pvf_angle").first;
-  if(PVF::compute_frame_angles(bundle, field.coefficients, angle_map) == PVF::Error_code::SUCCESS)
+  if(PVF::compute_frame_angles(*field.polyvector, angle_map) == PVF::Error_code::SUCCESS)
   {
     std::vector<double> angles;
     for(Face f : faces(tm))
@@ -1044,7 +1051,7 @@ Analysis analyse_field(const Options& o, Mesh& tm, const Bundle& bundle, const F
     else
     {
       auto deviation_map = tm.add_property_map<Face, double>("f:pvf_deviation").first;
-      if(PVF::compute_conjugacy_deviation(bundle, field.coefficients, curvature.map, deviation_map) == PVF::Error_code::SUCCESS)
+      if(PVF::compute_conjugacy_deviation(*field.polyvector, curvature.map, deviation_map) == PVF::Error_code::SUCCESS)
       {
         std::vector<double> deviation;
         for(Face f : faces(tm))

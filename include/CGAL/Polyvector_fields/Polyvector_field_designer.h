@@ -13,6 +13,7 @@
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
@@ -110,6 +111,7 @@ public:
   typedef Face_constraint<face_descriptor, Vector_3> Constraint;  ///< the constraint type accepted by `add_constraint()`
   typedef Tangent_bundle<TriangleMesh, Vertex_point_map> Bundle;  ///< the tangent bundle type returned by `tangent_bundle()`
   typedef std::complex<double> Complex;  ///< the complex number type of the coefficients
+  typedef Polyvector_field<Bundle> Field;  ///< the field type returned by `solve()`
   /// @}
 
   /// builds the face frames and the connection of `tm` for fields of degree `N`.
@@ -239,6 +241,23 @@ public:
     if(code != Error_code::SUCCESS)
       return code;
     internal::write_coefficients(*m_bundle, m_N, m_solution, coefficients);
+    return Error_code::SUCCESS;
+  }
+
+  /// computes the field and writes it into `field`: its bundle, degree and
+  /// symmetry are the designer's, and it keeps the constraints and the
+  /// smoothness weights of the design, which the stages after the design use
+  /// (the frame-field algorithms hold the hard constraints).
+  ///
+  /// \returns as the other overload. On failure `field` is not written.
+  Error_code solve(Field& field)
+  {
+    const Error_code code = compute();
+    if(code != Error_code::SUCCESS)
+      return code;
+    field = Field(*m_bundle, m_N, m_sign_symmetric, m_weight_kind);
+    field.coefficients() = m_solution;
+    field.set_constraint_specifications(m_specifications);
     return Error_code::SUCCESS;
   }
 

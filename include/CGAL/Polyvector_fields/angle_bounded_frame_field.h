@@ -12,8 +12,8 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/internal/Frame_fields/Local_global_driver.h>
-#include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_optimization.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -22,6 +22,8 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -41,27 +43,28 @@ struct Angle_bound_result
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
-/// designs, on a tangent bundle, a smooth frame field `{±u, ±v}` whose angle
+/// optimizes a frame field `{±u, ±v}` in place so that its angle
 /// between `u` and `v` is at least a bound `theta_min` in every face (paper,
 /// Section 4.2).
 ///
-/// Starting from the smoothest frame field that satisfies `constraints`, the
-/// algorithm alternates a local step, which turns `u` and `v` of every face
+/// Starting from `field` (typically the smooth field of
+/// `Polyvector_field_designer::solve()`), the algorithm alternates a local step, which turns `u` and `v` of every face
 /// symmetrically away from their bisector until their smallest angle reaches
 /// `theta_min` (faces within the bound are left as they are), and a global
 /// step, which finds the smoothest field close to the local one (Eq. 12,
 /// weight `lambda`, multiplied by `lambda_factor` at each iteration) while
-/// keeping the hard constraints. It stops when a global step leaves every face
+/// keeping the hard constraints of the design of `field`. It stops when a global step leaves every face
 /// within the bound, up to `tolerance`, or after `number_of_iterations` steps.
 /// Faces fixed by a hard full constraint are not changed, even if the
 /// constraint itself is below the bound (see `Angle_bound_result::minimum_angle`).
 /// The user manual's section "Angle-bounded frame fields" states the local step.
 ///
-/// \pvfFrameFieldTparams
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         the degrees of each global step are factored and solved in parallel with TBB; the result does not depend on it
+/// \tparam TangentBundle the tangent bundle type of the field
 ///
-/// \param mesh_or_bundle the tangent bundle of the mesh, or the mesh
-/// \param constraints the constraints; each vector `u` stands for the pair `{u, -u}`
-/// \param coefficient_map receives the 4 coefficients of each face
+/// \param field a frame field (degree 4, sign-symmetric); on success, and when the iterations did not
+///        converge, it receives the optimized field
 /// \param result receives the number of iterations and the angles reached
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
@@ -89,10 +92,50 @@ struct Angle_bound_result
 ///   \pvfLocalGlobalParams{200}
 /// \cgalNamedParamsEnd
 ///
-/// \returns `SUCCESS` (also when the iterations did not converge: see `result.converged`),
-///          `INVALID_PARAMETER` or `NON_FINITE_VALUE` for a bad parameter, or an error of
-///          `Polyvector_field_designer::add_constraint()` and `Polyvector_field_designer::solve()`.
-///          On failure `coefficient_map` and `result` are not written.
+/// \returns `SUCCESS`; `DID_NOT_CONVERGE` when some free face is still below the bound after the
+///          iterations (then `field` and `result` hold the field of the last step and its report);
+///          `INCONSISTENT_DEGREE` if `field` is not a frame field; `INVALID_PARAMETER` or `NON_FINITE_VALUE`
+///          for a bad parameter; or `SOLVER_FAILURE`. On any other failure `field` and `result` are not written.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TangentBundle,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code design_angle_bounded_frame_field(Polyvector_field<TangentBundle>& field, Angle_bound_result& result,
+                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::Angle_bound_parameters p;
+  Error_code code = internal::read_angle_bound_parameters(np, p);
+  if(code != Error_code::SUCCESS)
+    return code;
+  if(!field.is_frame_field())
+    return Error_code::INCONSISTENT_DEGREE;
+  Polyvector_field<TangentBundle> optimized = field;
+  Angle_bound_result r;
+  code = internal::optimize_angle_bounded_field<ConcurrencyTag>(optimized, p, np, r);
+  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
+  {
+    field = std::move(optimized);
+    result = r;
+  }
+  return code;
+}
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// designs, on a tangent bundle or a mesh, the smoothest frame field that
+/// satisfies `constraints` (with `Polyvector_field_designer`, the solver and
+/// the smoothness weights of `np`), then bounds its angles with the other
+/// overload, and writes it into `coefficient_map`.
+///
+/// \pvfFrameFieldTparams
+///
+/// \param mesh_or_bundle the tangent bundle of the mesh, or the mesh
+/// \param constraints the constraints; each vector `u` stands for the pair `{u, -u}`
+/// \param coefficient_map receives the 4 coefficients of each face
+/// \param result receives the number of iterations and the angles reached
+/// \param np the named parameters of the other overload
+///
+/// \returns as the other overload, and an error of `Polyvector_field_designer::add_constraint()` and
+///          `Polyvector_field_designer::solve()`. `coefficient_map` and `result` are written when the other
+///          overload writes its field and report.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
           typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -100,46 +143,19 @@ Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle
                                             CoefficientMap coefficient_map, Angle_bound_result& result,
                                             const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-
-  const double theta_min = choose_parameter(get_parameter(np, internal_np::angle_bound), 70.0 * CGAL_PI / 180.0);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), 0.5 * CGAL_PI / 180.0);
-  internal::Local_global_parameters p;
-  Error_code code = internal::read_local_global_parameters(np, 200, std::numeric_limits<double>::infinity(), p);
+  // The parameters first: a bad one is reported before any design.
+  internal::Angle_bound_parameters p;
+  Error_code code = internal::read_angle_bound_parameters(np, p);
   if(code != Error_code::SUCCESS)
     return code;
-  if(!std::isfinite(theta_min) || !std::isfinite(tolerance))
-    return Error_code::NON_FINITE_VALUE;
-  if(!(theta_min > 0) || theta_min > CGAL_PI / 2 || !(tolerance >= 0))
-    return Error_code::INVALID_PARAMETER;
-
   const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
-  auto driver = internal::make_local_global_driver<ConcurrencyTag>(bundle, np);
-
-  // The measure: the smallest frame angle over the free faces, and over all faces.
-  Angle_bound_result r;
-  auto converged = [&](const std::vector<std::complex<double> >& field, std::size_t iteration, double lambda) {
-    r.minimum_free_angle = r.minimum_angle = std::numeric_limits<double>::infinity();
-    for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
-    {
-      const auto uv = internal::frame_vectors(&field[4 * f]);
-      const double a = internal::smallest_frame_angle(uv.first, uv.second);
-      r.minimum_angle = (std::min)(r.minimum_angle, a);
-      if(!driver.is_fixed(f))
-        r.minimum_free_angle = (std::min)(r.minimum_free_angle, a);
-    }
-    if(p.verbose && iteration > 0)
-      std::cerr << "angle bound: iteration " << iteration << ", lambda " << lambda
-                << ", smallest angle " << r.minimum_free_angle * 180 / CGAL_PI << " degrees\n";
-    return r.converged = r.minimum_free_angle >= theta_min - tolerance;
-  };
-  // The local step: u and v turned apart, symmetrically, up to the bound.
-  auto local_step = [&](std::size_t, const std::complex<double>& u, const std::complex<double>& v) {
-    return internal::enforce_angle_bound(u, v, theta_min);
-  };
-  return driver.design(constraints, std::vector<double>(bundle.number_of_faces(), 1.0), 0.0, p, local_step,
-                       converged, coefficient_map, r, result);
+  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
+  code = internal::design_smooth_frame_field<ConcurrencyTag>(bundle, constraints, np, field);
+  if(code == Error_code::SUCCESS)
+    code = design_angle_bounded_frame_field<ConcurrencyTag>(field, result, np);
+  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
+    field.write_coefficients(coefficient_map);
+  return code;
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields

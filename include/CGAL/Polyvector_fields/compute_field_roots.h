@@ -11,19 +11,17 @@
 /// \file compute_field_roots.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/blocked_range.h>
-#  include <tbb/parallel_for.h>
-#endif
 
 #include <complex>
 #include <type_traits>
@@ -42,22 +40,10 @@ void field_roots(const std::vector<std::complex<double> >& coefficients, std::si
 {
   const std::size_t F = coefficients.size() / N;
   roots.resize(F * N);
-  const auto faces = [&](std::size_t begin, std::size_t end) {
+  for_each_range<ConcurrencyTag>(F, 4096, [&](std::size_t begin, std::size_t end) {
     for(std::size_t f = begin; f < end; ++f)
       polyvector_roots(coefficients.data() + f * N, N, roots.data() + f * N, sign_symmetric);
-  };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, F, 4096),
-                      [&](const tbb::blocked_range<std::size_t>& r) { faces(r.begin(), r.end()); });
-    return;
-  }
-#else
-  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-  faces(0, F);
+  });
 }
 
 // World-space roots of a bundle's faces, written into `root_map`.
@@ -122,6 +108,29 @@ Error_code compute_field_roots(const Mesh_or_bundle& mesh_or_bundle, std::size_t
     return code;
   internal::field_roots<ConcurrencyTag>(coefficients, N, sign_symmetric, roots);
   internal::write_world_roots<typename Geom_traits::Vector_3>(bundle, N, roots, root_map);
+  return Error_code::SUCCESS;
+}
+
+/// \ingroup PkgPolyvectorFieldsPolynomial
+///
+/// computes the `N` vectors of every face of `field`, in world coordinates, as
+/// the other overload does from a coefficient map (the symmetry is the field's).
+///
+/// \tparam RootMap a model of `WritablePropertyMap` from faces to `std::vector<Vector_3>`, `Vector_3` the vector
+///         type of the kernel of the mesh's points
+///
+/// \returns `SUCCESS`, or the bundle's error; on failure `root_map` is not written.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TangentBundle, typename RootMap>
+Error_code compute_field_roots(const Polyvector_field<TangentBundle>& field, RootMap root_map)
+{
+  const TangentBundle& bundle = field.tangent_bundle();
+  if(bundle.status() != Error_code::SUCCESS)
+    return bundle.status();
+  typedef typename boost::property_traits<typename TangentBundle::Vertex_point_map>::value_type Point_3;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
+  std::vector<std::complex<double> > roots;
+  internal::field_roots<ConcurrencyTag>(field.coefficients(), field.degree(), field.is_sign_symmetric(), roots);
+  internal::write_world_roots<Vector_3>(bundle, field.degree(), roots, root_map);
   return Error_code::SUCCESS;
 }
 

@@ -12,6 +12,7 @@
 /// Topology of PolyVector fields: principal matching and singularities (paper, Section 3.4).
 
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/Singularity.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
@@ -237,16 +238,9 @@ Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size
   const Error_code code = internal::read_coefficients(bundle, N, coefficient_map, c);
   if(code != Error_code::SUCCESS)
     return code;
-  std::vector<int> numerator;
-  std::vector<unsigned char> state;
-  internal::index_numerators<ConcurrencyTag>(bundle, N, c, numerator, state);
-  for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
-    if(state[i] == 1 && numerator[i] != 0)
-      *singularities++ = Singularity<vertex_descriptor>{ bundle.vertex(i), numerator[i] };
-  for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
-    if(state[i] == 2)
-      *undefined_vertices++ = bundle.vertex(i);
-  return Error_code::SUCCESS;
+  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, N);
+  field.coefficients().swap(c);
+  return compute_singularities<ConcurrencyTag>(field, singularities, undefined_vertices);
 }
 
 /// \ingroup PkgPolyvectorFieldsTopology
@@ -262,6 +256,33 @@ Error_code compute_singularities(const Mesh_or_bundle& mesh_or_bundle, std::size
 {
   return compute_singularities<ConcurrencyTag>(mesh_or_bundle, N, coefficient_map, singularities,
                                                CGAL::Emptyset_iterator(), np);
+}
+
+/// \ingroup PkgPolyvectorFieldsTopology
+///
+/// computes the singular vertices of `field` and their indices, as the other
+/// overloads do from a coefficient map.
+///
+/// \returns `SUCCESS` or the bundle's error; nothing is written on failure.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TangentBundle,
+          typename SingularityOutputIterator, typename VertexOutputIterator = CGAL::Emptyset_iterator>
+Error_code compute_singularities(const Polyvector_field<TangentBundle>& field, SingularityOutputIterator singularities,
+                                 VertexOutputIterator undefined_vertices = VertexOutputIterator())
+{
+  const TangentBundle& bundle = field.tangent_bundle();
+  if(bundle.status() != Error_code::SUCCESS)
+    return bundle.status();
+  typedef typename TangentBundle::vertex_descriptor vertex_descriptor;
+  std::vector<int> numerator;
+  std::vector<unsigned char> state;
+  internal::index_numerators<ConcurrencyTag>(bundle, field.degree(), field.coefficients(), numerator, state);
+  for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
+    if(state[i] == 1 && numerator[i] != 0)
+      *singularities++ = Singularity<vertex_descriptor>{ bundle.vertex(i), numerator[i] };
+  for(std::size_t i = 0; i < bundle.number_of_vertices(); ++i)
+    if(state[i] == 2)
+      *undefined_vertices++ = bundle.vertex(i);
+  return Error_code::SUCCESS;
 }
 
 /// \ingroup PkgPolyvectorFieldsTopology

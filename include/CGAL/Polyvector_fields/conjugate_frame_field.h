@@ -13,20 +13,17 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
-#include <CGAL/Polyvector_fields/internal/Frame_fields/Local_global_driver.h>
-#include <CGAL/Polyvector_fields/internal/Frame_fields/conjugacy_projection.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
+#include <CGAL/Polyvector_fields/internal/Frame_fields/conjugate_field_optimization.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
-#include <array>
-#include <cmath>
-#include <iostream>
 #include <limits>
-#include <map>
+#include <array>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -93,51 +90,21 @@ struct Conjugate_field_result
   std::size_t factorizations = 0;      ///< numerical factorizations of the global steps (one per new `lambda`; none at the cap)
 };
 
-namespace internal {
-
-// Shape operators in the face frames and the normalised |K| of every face.
-template <typename Bundle, typename CurvatureMap>
-Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, std::vector<std::array<double, 4> >& S,
-                                std::vector<double>& normalised_gaussian, std::vector<double>& largest_curvature)
-{
-  using boost::get;
-  const std::size_t F = bundle.number_of_faces();
-  S.resize(F);
-  normalised_gaussian.resize(F);
-  largest_curvature.resize(F);
-  double largest = 0;
-  for(std::size_t f = 0; f < F; ++f)
-  {
-    const auto pc = get(curvatures, bundle.face(f));
-    S[f] = shape_operator(pc, bundle.frame(f));
-    for(double x : S[f])
-      if(!std::isfinite(x))
-        return Error_code::NON_FINITE_VALUE;
-    normalised_gaussian[f] = std::abs(pc.k1 * pc.k2);
-    largest_curvature[f] = (std::max)(std::abs(pc.k1), std::abs(pc.k2));
-    largest = (std::max)(largest, normalised_gaussian[f]);
-  }
-  for(double& k : normalised_gaussian)
-    k = largest > 0 ? k / largest : 0.0;
-  return Error_code::SUCCESS;
-}
-
-} // namespace internal
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
-/// designs, on a tangent bundle, a smooth frame field `{±u, ±v}` whose vectors
+/// optimizes a frame field `{±u, ±v}` in place so that its vectors
 /// are conjugate with respect to the surface's second fundamental form,
 /// `u^T S v = 0` in every face (paper, Section 4.3 and Appendix A): the
 /// directions that planar-quad meshes follow.
 ///
-/// Starting from the smoothest frame field that satisfies `constraints`, the
-/// algorithm alternates a local step, which projects `(u, v)` of each face onto
+/// Starting from `field` (typically the smooth field of
+/// `Polyvector_field_designer::solve()`), the algorithm alternates a local step, which projects `(u, v)` of each face onto
 /// the quadric `u^T S v = 0` (the closest conjugate pair; the user manual's
 /// section "Conjugate frame fields" states the projection), and a global step,
 /// which finds the smoothest field close to the local one with weights
 /// `lambda * Khat_f` (Eq. 16, `Khat_f = |k1 k2|` normalised to `[0, 1]`) plus the
-/// orthogonality term `w |c_2|^2` (Eq. 17), keeping the hard constraints.
+/// orthogonality term `w |c_2|^2` (Eq. 17), keeping the hard constraints of the design of `field`.
 /// `lambda` is multiplied by `lambda_factor` at each iteration, up to
 /// `maximum_lambda`; from there on the matrix no longer changes, and each
 /// iteration reuses its factorization (one solve). By default it stops when
@@ -150,7 +117,14 @@ Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, s
 /// "Conjugate frame fields" gives the reasons for the defaults and what a
 /// tolerance means for the planarity of quads.
 ///
-/// \pvfFrameFieldTparams
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         the degrees of each global step are factored and solved in parallel with TBB; the result does not depend on it
+/// \tparam TangentBundle the tangent bundle type of the field
+///
+/// \param field a frame field (degree 4, sign-symmetric); on success, and when the iterations did not
+///        converge, it receives the optimized field
+/// \param result receives the report
+/// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{principal_curvature_map}
@@ -181,10 +155,52 @@ Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, s
 ///   \pvfLocalGlobalParams{50 with the mean deviation\, 100 with the residual sum}
 /// \cgalNamedParamsEnd
 ///
-/// \returns `SUCCESS` (also when the iterations did not converge: see `result.converged`),
-///          `INVALID_PARAMETER` or `NON_FINITE_VALUE` for a bad parameter or curvature, an error of
-///          `estimate_principal_curvatures()`, or an error of `Polyvector_field_designer::add_constraint()`
-///          and `Polyvector_field_designer::solve()`. On failure `coefficient_map` and `result` are not written.
+/// \returns `SUCCESS`; `DID_NOT_CONVERGE` when the stopping rule was not met within the iterations (then
+///          `field` and `result` hold the field of the last step and its report); `INCONSISTENT_DEGREE`
+///          if `field` is not a frame field; `INVALID_PARAMETER` or `NON_FINITE_VALUE` for a bad parameter
+///          or curvature; an error of `estimate_principal_curvatures()`; or `SOLVER_FAILURE`. On any
+///          other failure `field` and `result` are not written.
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TangentBundle,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code design_conjugate_frame_field(Polyvector_field<TangentBundle>& field, Conjugate_field_result& result,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::Conjugate_field_parameters p;
+  Error_code code = internal::read_conjugate_field_parameters(np, Conjugacy_stopping_rule::MEAN_DEVIATION,
+                                                              Conjugacy_stopping_rule::RESIDUAL_SUM,
+                                                              &conjugate_field_defaults, p);
+  if(code != Error_code::SUCCESS)
+    return code;
+  if(!field.is_frame_field())
+    return Error_code::INCONSISTENT_DEGREE;
+  std::vector<std::array<double, 4> > S;
+  std::vector<double> Khat, kmax;
+  code = internal::face_curvature_of(field.tangent_bundle(), np, S, Khat, kmax);
+  if(code != Error_code::SUCCESS)
+    return code;
+  Polyvector_field<TangentBundle> optimized = field;
+  Conjugate_field_result r;
+  code = internal::optimize_conjugate_field<ConcurrencyTag>(optimized, S, Khat, kmax, p, np, r);
+  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
+  {
+    field = std::move(optimized);
+    result = r;
+  }
+  return code;
+}
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// designs, on a tangent bundle or a mesh, the smoothest frame field that
+/// satisfies `constraints` (with `Polyvector_field_designer`, the solver and
+/// the smoothness weights of `np`), then makes it conjugate with the other
+/// overload, and writes it into `coefficient_map`.
+///
+/// \pvfFrameFieldTparams
+///
+/// \returns as the other overload, and an error of `Polyvector_field_designer::add_constraint()` and
+///          `Polyvector_field_designer::solve()`. `coefficient_map` and `result` are written when the other
+///          overload writes its field and report.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
           typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -192,90 +208,21 @@ Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, co
                                         CoefficientMap coefficient_map, Conjugate_field_result& result,
                                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  typedef std::complex<double> Complex;
-
-  const double orthogonality = choose_parameter(get_parameter(np, internal_np::orthogonality_weight), 0.0);
-  const Conjugacy_stopping_rule rule =
-    choose_parameter(get_parameter(np, internal_np::stopping_rule), Conjugacy_stopping_rule::MEAN_DEVIATION);
-  const bool paper_rule = rule == Conjugacy_stopping_rule::RESIDUAL_SUM;
-  const Conjugate_field_defaults defaults = conjugate_field_defaults(rule);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::tolerance), defaults.tolerance);
-  internal::Local_global_parameters p;
-  Error_code code = internal::read_local_global_parameters(np, defaults.iterations, defaults.maximum_lambda, p);
+  // The parameters first: a bad one is reported before any design.
+  internal::Conjugate_field_parameters p;
+  Error_code code = internal::read_conjugate_field_parameters(np, Conjugacy_stopping_rule::MEAN_DEVIATION,
+                                                              Conjugacy_stopping_rule::RESIDUAL_SUM,
+                                                              &conjugate_field_defaults, p);
   if(code != Error_code::SUCCESS)
     return code;
-  if(!std::isfinite(orthogonality) || !std::isfinite(tolerance))
-    return Error_code::NON_FINITE_VALUE;
-  if(!(orthogonality >= 0) || !(tolerance > 0))
-    return Error_code::INVALID_PARAMETER;
-
   const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
-  typedef std::decay_t<decltype(bundle)> Bundle;
-  typedef typename CGAL::GetGeomTraits<typename Bundle::Triangle_mesh, NamedParameters>::type Geom_traits;
-  auto driver = internal::make_local_global_driver<ConcurrencyTag>(bundle, np);
-  // Curvature: given, or estimated.
-  std::vector<std::array<double, 4> > S;
-  std::vector<double> Khat, kmax;
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
-    code = internal::face_shape_operators(bundle, get_parameter(np, internal_np::principal_curvature_map), S, Khat, kmax);
-  else
-  {
-    std::map<typename Bundle::face_descriptor, Principal_curvatures<typename Geom_traits::Vector_3> > estimated;
-    code = estimate_principal_curvatures(bundle, boost::make_assoc_property_map(estimated), np);
-    if(code == Error_code::SUCCESS)
-      code = internal::face_shape_operators(bundle, boost::make_assoc_property_map(estimated), S, Khat, kmax);
-  }
-  if(code != Error_code::SUCCESS)
-    return code;
-
-  // The measure: residuals on the field scaled to unit root mean square
-  // length, the scale being that of the smooth field.
-  const std::size_t F = bundle.number_of_faces();
-  Conjugate_field_result r;
-  auto converged = [&](const std::vector<Complex>& field, std::size_t iteration, double lambda) {
-    if(iteration == 0)
-    {
-      double mean_square = 0;
-      for(std::size_t f = 0; f < F; ++f)
-      {
-        const auto uv = internal::frame_vectors(&field[4 * f]);
-        mean_square += (std::norm(uv.first) + std::norm(uv.second)) / (2.0 * double(F));
-      }
-      r.scale = mean_square > 0 ? 1.0 / std::sqrt(mean_square) : 1.0;
-    }
-    r.free_residual = r.constrained_residual = 0;
-    double deviation_sum = 0, weight_sum = 0;
-    for(std::size_t f = 0; f < F; ++f)
-    {
-      const auto uv = internal::frame_vectors(&field[4 * f]);
-      const double residual = std::abs(internal::conjugacy_residual(S[f], uv.first, uv.second));
-      (driver.is_fixed(f) ? r.constrained_residual : r.free_residual) += r.scale * r.scale * residual;
-      if(!driver.is_fixed(f) && Khat[f] > 0)
-      {
-        const double size = std::abs(uv.first) * std::abs(uv.second) * kmax[f];
-        deviation_sum += Khat[f] * (size > 0 ? residual / size : 0.0);
-        weight_sum += Khat[f];
-      }
-    }
-    r.residual = r.free_residual + r.constrained_residual;
-    r.mean_deviation = weight_sum > 0 ? deviation_sum / weight_sum : 0.0;
-    r.residual_history.push_back(r.free_residual);
-    r.deviation_history.push_back(r.mean_deviation);
-    r.final_lambda = iteration > 0 ? lambda : 0.0;
-    if(p.verbose && iteration > 0)
-      std::cerr << "conjugate field: iteration " << iteration << ", lambda " << lambda
-                << ", mean deviation (free faces) " << r.mean_deviation << ", residual (free faces) " << r.free_residual
-                << ", (constrained faces) " << r.constrained_residual << "\n";
-    return r.converged = paper_rule ? r.free_residual < tolerance : r.mean_deviation <= tolerance;
-  };
-  // The local step: the closest conjugate pair.
-  auto local_step = [&](std::size_t f, const Complex& u, const Complex& v) {
-    return internal::project_onto_conjugate_pair(S[f], u, v);
-  };
-  return driver.design(constraints, Khat, orthogonality, p, local_step, converged, coefficient_map, r, result);
+  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
+  code = internal::design_smooth_frame_field<ConcurrencyTag>(bundle, constraints, np, field);
+  if(code == Error_code::SUCCESS)
+    code = design_conjugate_frame_field<ConcurrencyTag>(field, result, np);
+  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
+    field.write_coefficients(coefficient_map);
+  return code;
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields

@@ -12,6 +12,7 @@
 /// Per-face measures of frame fields: the angle between `u` and `v`, and the deviation from conjugacy.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
@@ -23,10 +24,77 @@
 
 #include <cmath>
 #include <complex>
+#include <array>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Polyvector_fields {
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// computes, for every face of the frame field `field`, the smallest angle
+/// between two of its vectors, in radians, in `[0, pi/2]`.
+///
+/// \tparam AngleMap a model of `WritablePropertyMap` from faces to `double`
+///
+/// \returns `SUCCESS`, the bundle's error, or `INCONSISTENT_DEGREE` if `field` is not a frame field
+///          (degree 4, sign-symmetric); nothing is written on failure.
+template <typename TangentBundle, typename AngleMap>
+Error_code compute_frame_angles(const Polyvector_field<TangentBundle>& field, AngleMap angle_map)
+{
+  const TangentBundle& bundle = field.tangent_bundle();
+  if(bundle.status() != Error_code::SUCCESS)
+    return bundle.status();
+  if(field.degree() != 4)
+    return Error_code::INCONSISTENT_DEGREE;
+  const std::vector<std::complex<double> >& c = field.coefficients();
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
+  {
+    const auto uv = internal::frame_vectors(&c[4 * f]);
+    put(angle_map, bundle.face(f), internal::smallest_frame_angle(uv.first, uv.second));
+  }
+  return Error_code::SUCCESS;
+}
+
+/// \ingroup PkgPolyvectorFieldsFrameFields
+///
+/// computes, for every face of the frame field `field`, its deviation from
+/// conjugacy `|u^T S v| / (|u| |v| max(|k1|, |k2|))`, as the overload that
+/// takes a coefficient map does.
+///
+/// \tparam CurvatureMap a model of `ReadablePropertyMap` from faces to `Principal_curvatures<Vector_3>`
+/// \tparam DeviationMap a model of `WritablePropertyMap` from faces to `double`
+///
+/// \returns as `compute_frame_angles()`, and `NON_FINITE_VALUE` for a non-finite curvature; nothing is
+///          written on failure.
+template <typename TangentBundle, typename CurvatureMap, typename DeviationMap>
+Error_code compute_conjugacy_deviation(const Polyvector_field<TangentBundle>& field, CurvatureMap curvature_map,
+                                       DeviationMap deviation_map)
+{
+  using boost::get;
+  const TangentBundle& bundle = field.tangent_bundle();
+  if(bundle.status() != Error_code::SUCCESS)
+    return bundle.status();
+  if(field.degree() != 4)
+    return Error_code::INCONSISTENT_DEGREE;
+  const std::vector<std::complex<double> >& c = field.coefficients();
+  std::vector<double> deviation(bundle.number_of_faces());
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
+  {
+    const auto pc = get(curvature_map, bundle.face(f));
+    const std::array<double, 4> S = shape_operator(pc, bundle.frame(f));
+    const double k = (std::max)(std::abs(pc.k1), std::abs(pc.k2));
+    if(!std::isfinite(k) || !std::isfinite(S[0]) || !std::isfinite(S[1]) || !std::isfinite(S[3]))
+      return Error_code::NON_FINITE_VALUE;
+    const auto uv = internal::frame_vectors(&c[4 * f]);
+    const double scale = std::abs(uv.first) * std::abs(uv.second) * k;
+    deviation[f] = scale > 0 ? std::abs(internal::conjugacy_residual(S, uv.first, uv.second)) / scale : 0.0;
+  }
+  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
+    put(deviation_map, bundle.face(f), deviation[f]);
+  return Error_code::SUCCESS;
+}
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
@@ -47,16 +115,11 @@ Error_code compute_frame_angles(const Mesh_or_bundle& mesh_or_bundle, Coefficien
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
-  std::vector<std::complex<double> > c;
-  const Error_code code = internal::read_coefficients(bundle, 4, coefficient_map, c);
+  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
+  const Error_code code = field.read_coefficients(coefficient_map);
   if(code != Error_code::SUCCESS)
     return code;
-  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
-  {
-    const auto uv = internal::frame_vectors(&c[4 * f]);
-    put(angle_map, bundle.face(f), internal::smallest_frame_angle(uv.first, uv.second));
-  }
-  return Error_code::SUCCESS;
+  return compute_frame_angles(field, angle_map);
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
@@ -80,27 +143,12 @@ Error_code compute_conjugacy_deviation(const Mesh_or_bundle& mesh_or_bundle, Coe
                                        CurvatureMap curvature_map, DeviationMap deviation_map,
                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using boost::get;
   const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
-  std::vector<std::complex<double> > c;
-  const Error_code code = internal::read_coefficients(bundle, 4, coefficient_map, c);
+  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
+  const Error_code code = field.read_coefficients(coefficient_map);
   if(code != Error_code::SUCCESS)
     return code;
-  std::vector<double> deviation(bundle.number_of_faces());
-  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
-  {
-    const auto pc = get(curvature_map, bundle.face(f));
-    const std::array<double, 4> S = shape_operator(pc, bundle.frame(f));
-    const double k = (std::max)(std::abs(pc.k1), std::abs(pc.k2));
-    if(!std::isfinite(k) || !std::isfinite(S[0]) || !std::isfinite(S[1]) || !std::isfinite(S[3]))
-      return Error_code::NON_FINITE_VALUE;
-    const auto uv = internal::frame_vectors(&c[4 * f]);
-    const double scale = std::abs(uv.first) * std::abs(uv.second) * k;
-    deviation[f] = scale > 0 ? std::abs(internal::conjugacy_residual(S, uv.first, uv.second)) / scale : 0.0;
-  }
-  for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
-    put(deviation_map, bundle.face(f), deviation[f]);
-  return Error_code::SUCCESS;
+  return compute_conjugacy_deviation(field, curvature_map, deviation_map);
 }
 
 } // namespace Polyvector_fields

@@ -11,6 +11,7 @@
 /// \file smoothness_energy.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
@@ -82,6 +83,20 @@ double smoothness_energy(const Mesh_or_bundle& mesh_or_bundle, std::size_t N, Co
     return std::numeric_limits<double>::quiet_NaN();
   return internal::smoothness_energy(bundle, N, c,
                                      internal::smoothness_edge_weights(bundle, internal::read_smoothness_weights(np)));
+}
+
+/// \ingroup PkgPolyvectorFieldsDesign
+///
+/// returns the smoothness energy of `field`, with the edge weights it was
+/// designed with, as the other overload computes it.
+template <typename TangentBundle>
+double smoothness_energy(const Polyvector_field<TangentBundle>& field)
+{
+  const TangentBundle& bundle = field.tangent_bundle();
+  if(bundle.status() != Error_code::SUCCESS)
+    return std::numeric_limits<double>::quiet_NaN();
+  return internal::smoothness_energy(bundle, field.degree(), field.coefficients(),
+                                     internal::smoothness_edge_weights(bundle, field.smoothness_weights()));
 }
 
 } // namespace Polyvector_fields

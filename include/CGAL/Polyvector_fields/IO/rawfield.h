@@ -23,11 +23,10 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
+#include <CGAL/Polyvector_fields/internal/parallel.h>
+
 #include <boost/property_map/property_map.hpp>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/parallel_for.h>
-#endif
 
 #include <charconv>
 #include <cmath>
@@ -158,13 +157,8 @@ bool format_rawfield(RootMap root_map, std::size_t N, const FaceList& face_ids, 
       const std::size_t first = start + c * chunk;
       append_rawfield_lines(root_map, N, face_ids, first, (std::min)(F, first + chunk), texts[c]);
     };
-#ifdef CGAL_LINKED_WITH_TBB
-    if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && chunks > 1)
-      tbb::parallel_for(std::size_t(0), chunks, format);
-    else
-#endif
-      for(std::size_t c = 0; c < chunks; ++c)
-        format(c);
+    Polyvector_fields::internal::for_each_index(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && chunks > 1, chunks,
+                                                format);
     for(std::size_t c = 0; c < chunks; ++c)
       if(!sink(static_cast<const char*>(texts[c].data()), texts[c].size()))
         return false;

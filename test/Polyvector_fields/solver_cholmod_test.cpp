@@ -15,7 +15,7 @@
 // so does the size-adaptive default (Adaptive_sparse_solver).
 
 #include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
-#include <CGAL/Polyvector_fields/Amg_solver.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>

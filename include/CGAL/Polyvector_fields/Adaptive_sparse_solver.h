@@ -13,7 +13,7 @@
 /// A sparse solver that picks a direct factorization for small systems and
 /// multigrid-preconditioned conjugate gradient for large ones.
 
-#include <CGAL/Polyvector_fields/Amg_solver.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 

@@ -13,7 +13,7 @@
 /// The sparse solvers that are always available, and the package's default.
 
 #include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
-#include <CGAL/Polyvector_fields/Amg_solver.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 
 #if defined(CGAL_PVF_HAS_CHOLMOD)

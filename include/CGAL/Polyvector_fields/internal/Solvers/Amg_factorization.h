@@ -28,7 +28,7 @@
 //                      if CG does not converge, a direct factorization of the
 //                      same matrix finishes the solve.
 
-#include <CGAL/Polyvector_fields/Amg_solver.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/Smoothed_aggregation.h>
 #include <CGAL/Polyvector_fields/internal/types.h>

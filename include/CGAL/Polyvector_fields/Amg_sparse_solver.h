@@ -5,10 +5,10 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_AMG_SOLVER_H
-#define CGAL_POLYVECTOR_FIELDS_AMG_SOLVER_H
+#ifndef CGAL_POLYVECTOR_FIELDS_AMG_SPARSE_SOLVER_H
+#define CGAL_POLYVECTOR_FIELDS_AMG_SPARSE_SOLVER_H
 
-/// \file Amg_solver.h
+/// \file Amg_sparse_solver.h
 ///
 /// An iterative solver whose cost grows linearly with the mesh: conjugate
 /// gradient preconditioned by smoothed-aggregation multigrid.
@@ -245,4 +245,4 @@ inline bool Amg_sparse_solver::linear_solver(const Vector& B, Vector& X)
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_AMG_SOLVER_H
+#endif // CGAL_POLYVECTOR_FIELDS_AMG_SPARSE_SOLVER_H

@@ -5,9 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-// One frame field designed with three sparse solvers: the direct solver, the
-// multigrid one and the default (the direct solver on small systems, multigrid
-// on large ones), and how far their coefficients are from the direct solver's.
+// One frame field designed with the direct solver, with multigrid and with the
+// default solver, and how far they are from the direct solver's.
 //
 //   solver_choice [mesh.off]      (default: the bundled bumpy.off)
 
@@ -15,7 +14,6 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
-
 #include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
@@ -31,7 +29,6 @@
 #ifndef PVF_DATA_DIR
 #define PVF_DATA_DIR "data"
 #endif
-
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Vector_3 Vector;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
@@ -71,8 +68,7 @@ int main(int argc, char** argv)
 {
   const std::string filename = argc > 1 ? argv[1] : std::string(PVF_DATA_DIR) + "/bumpy.off";
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || !CGAL::is_triangle_mesh(mesh) || mesh.number_of_faces() < 2 ||
-     mesh.has_garbage())
+  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || !CGAL::is_triangle_mesh(mesh) || mesh.number_of_faces() < 2)
   {
     std::cerr << "cannot read a triangle mesh with two faces or more from " << filename << std::endl;
     return EXIT_FAILURE;

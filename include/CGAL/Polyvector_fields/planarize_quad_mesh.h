@@ -79,10 +79,10 @@ struct Planarization_result
 /// (floor 1e-3): at a fixed point the effective closeness and fairness weights
 /// are `wc beta` and `wf beta`, so planarity wins more and more.
 ///
-/// The matrix (real, symmetric, positive definite) is factored once through
+/// That matrix is real, symmetric and positive definite; it is factored through
 /// `Sparse_factorization<SolverTraits, double>` for the solver of the named parameter
-/// `sparse_linear_solver` (default: Eigen's `SimplicialLDLT`), and each iteration
-/// solves for the three coordinates at once. All computations are done in
+/// `sparse_linear_solver` (default: Eigen's `SimplicialLDLT`, with or without
+/// CHOLMOD), and each iteration solves for the three coordinates at once. All computations are done in
 /// `double`, whatever the kernels.
 /// It is a local-global method like the frame-field algorithms, but not on their
 /// driver: its unknowns are real vertex positions (three right-hand sides, one

@@ -263,7 +263,7 @@ TEST(ThirdPartySolver, PlanarizerUsesTheModelOnRealSystems)
   EXPECT_LE(r_model.max_planarity_after, 0.002);
   double largest = 0;
   for(auto v : vertices(quads))
-    largest = (std::max)(largest, distance(by_model.point(v), by_default.point(v)));
+    largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(by_model.point(v), by_default.point(v))));
   EXPECT_LT(largest, 1e-10);
 }
 

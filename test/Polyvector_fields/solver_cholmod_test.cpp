@@ -15,7 +15,7 @@
 // so does the size-adaptive default (Adaptive_sparse_solver).
 
 #include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
-#include <CGAL/Polyvector_fields/Amg_solver.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
@@ -561,7 +561,7 @@ TEST(SolverAgreement, AdaptiveSolverPicksBySize)
 // negative pivot), and so is a solve before any factorization.
 TEST(SolverAgreement, CholmodFactorizationRefusesIndefiniteMatrices)
 {
-  typedef PVF::internal::Factorization<PVF::Cholmod_sparse_solver> Factorization;
+  typedef PVF::Sparse_factorization<PVF::Cholmod_sparse_solver, Complex> Factorization;
   const Complex i(0, 1);
   // Hermitian 3x3, full storage.
   Eigen::MatrixXcd dense(3, 3);
@@ -571,7 +571,7 @@ TEST(SolverAgreement, CholmodFactorizationRefusesIndefiniteMatrices)
   PVF::internal::Sparse_matrix A = dense.sparseView();
   A.makeCompressed();
   Factorization positive;
-  PVF::internal::Dense_vector x, b(3);
+  Factorization::Dense_matrix x, b(3, 1);
   b << 1.0, i, 2.0 - i;
   EXPECT_FALSE(positive.solve(b, x));
   ASSERT_TRUE(positive.analyze(A));

@@ -13,8 +13,8 @@
 /// A sparse solver that picks a direct factorization for small systems and
 /// multigrid-preconditioned conjugate gradient for large ones.
 
-#include <CGAL/Polyvector_fields/Amg_solver.h>
-#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Eigen_sparse_matrix.h>
@@ -119,17 +119,19 @@ private:
   bool m_amg_in_use = false;
 };
 
-namespace internal {
-
-// One block: the direct solver's factorization or the multigrid one, chosen
-// in analyze() by the matrix's size.
+/// \cond SKIP_IN_MANUAL
+// The model of the SparseFactorization concept for Adaptive_sparse_solver:
+// the direct solver's factorization or the multigrid one, chosen in analyze()
+// by the matrix's size.
 template <typename DirectSolver>
-class Factorization<Adaptive_sparse_solver<DirectSolver> >
+class Sparse_factorization<Adaptive_sparse_solver<DirectSolver>, std::complex<double> >
 {
-  typedef Factorization<DirectSolver> Direct;
-  typedef Factorization<Amg_sparse_solver> Amg;
+  typedef Sparse_factorization<DirectSolver, std::complex<double> > Direct;
+  typedef Sparse_factorization<Amg_sparse_solver, std::complex<double> > Amg;
 
 public:
+  typedef internal::Sparse_matrix Matrix;
+  typedef Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic> Dense_matrix;
   static constexpr bool is_thread_safe = Direct::is_thread_safe && Amg::is_thread_safe;
   static constexpr bool keeps_matrix = Direct::keeps_matrix || Amg::keeps_matrix;
   // Kept alive by the caller while blocks are computed: the direct solver's
@@ -143,15 +145,15 @@ public:
     std::shared_ptr<typename Amg::Shared_analysis> amg;
   };
 
-  explicit Factorization(const Adaptive_sparse_solver<DirectSolver>& solver = Adaptive_sparse_solver<DirectSolver>())
+  explicit Sparse_factorization(const Adaptive_sparse_solver<DirectSolver>& solver = Adaptive_sparse_solver<DirectSolver>())
     : m_solver(solver)
   {}
-  Factorization(const Factorization&) = delete;
-  Factorization& operator=(const Factorization&) = delete;
+  Sparse_factorization(const Sparse_factorization&) = delete;
+  Sparse_factorization& operator=(const Sparse_factorization&) = delete;
 
   void share_analysis(const std::shared_ptr<Shared_analysis>& s) { m_shared = s; }
 
-  bool analyze(const Sparse_matrix& A)
+  bool analyze(const Matrix& A)
   {
     if(!m_shared)
       m_shared = std::make_shared<Shared_analysis>();
@@ -177,14 +179,14 @@ public:
     return m_direct->analyze(A);
   }
 
-  bool factorize(const Sparse_matrix& A)
+  bool factorize(const Matrix& A)
   {
     if(m_amg_in_use)
       return m_amg && m_amg->factorize(A);
     return m_direct && m_direct->factorize(A);
   }
 
-  bool solve(const Dense_vector& b, Dense_vector& x)
+  bool solve(const Dense_matrix& b, Dense_matrix& x)
   {
     if(m_amg_in_use)
       return m_amg && m_amg->solve(b, x);
@@ -198,8 +200,8 @@ private:
   std::unique_ptr<Amg> m_amg;
   bool m_amg_in_use = false;
 };
+/// \endcond
 
-} // namespace internal
 } // namespace Polyvector_fields
 } // namespace CGAL
 

@@ -13,8 +13,8 @@
 /// The sparse solvers that are always available, and the package's default.
 
 #include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
-#include <CGAL/Polyvector_fields/Amg_solver.h>
-#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
 
 #if defined(CGAL_PVF_HAS_CHOLMOD)
 #  include <CGAL/Polyvector_fields/Cholmod_solver.h>

@@ -16,7 +16,8 @@
 //               (internal/smoothest_rosy_field.h), assembles the normal
 //               equations (internal/Hermitian_assembly.h), analyses their
 //               common pattern once and factors every block
-//               (internal/Block_factorizations.h);
+//               (internal/Solvers/Block_factorizations.h, through the
+//               solver's Sparse_factorization);
 //   refactor()  after new data-term weights: refills the matrices in place and
 //               refactors numerically (a new analysis only if a term falls
 //               outside the pattern);
@@ -129,7 +130,7 @@ public:
     const bool solved = for_each_block(m_layout.number_of_blocks(), m_factorizations.parallel(), [&](std::size_t b) {
       Right_hand_side_sink rhs(m_layout.size());
       m_energy.enumerate_terms(m_layout, m_unit_specifications, unit_data, b, rhs);
-      Dense_vector x;
+      typename Block_factorizations<SolverTraits>::Dense_matrix x;
       if(m_layout.size() > 0 && !m_factorizations.solve(b, rhs.vector(), x))
         return false;
       for(std::size_t f = 0; f < F; ++f)
@@ -140,7 +141,7 @@ public:
           const Unknown_layout::Affine c = m_layout.coefficient(f, q, degrees()[q]);
           Complex value = c.constant;
           for(int j = 0; j < c.size; ++j)
-            value += c.coefficient[j] * x[Eigen::Index(c.first + std::size_t(j))];
+            value += c.coefficient[j] * x(Eigen::Index(c.first + std::size_t(j)), 0);
           coefficients[f * m_N + std::size_t(degrees()[q])] = scaled(value, m_k * (int(m_N) - degrees()[q]));
         }
       return true;

@@ -15,7 +15,7 @@
 // iteration on the Laplacian shifted by a tiny multiple of the identity (so
 // that a flat component, whose smallest eigenvalue is 0, can be factored).
 
-#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <Eigen/Sparse>
@@ -59,8 +59,9 @@ bool smoothest_rosy_fields(const Bundle& bundle, std::size_t N, const std::vecto
     triplets.emplace_back(int(i), int(i), Complex(shift));
   Sparse_matrix A(n, n);
   A.setFromTriplets(triplets.begin(), triplets.end());
-  Factorization<SolverTraits> factorization(solver_prototype);
-  typename Factorization<SolverTraits>::Solver_scope scope;
+  typedef Sparse_factorization<SolverTraits, Complex> Factorization;
+  Factorization factorization(solver_prototype);
+  typename Factorization::Solver_scope scope;
   if(!factorization.analyze(A) || !factorization.factorize(A))
     return false;
 
@@ -88,11 +89,13 @@ bool smoothest_rosy_fields(const Bundle& bundle, std::size_t N, const std::vecto
     }
   };
   Dense_vector x = Dense_vector::Ones(n), y;
+  typename Factorization::Dense_matrix solution;
   normalise(x, x);
   for(int iteration = 0; iteration < 1000; ++iteration)
   {
-    if(!factorization.solve(x, y))
+    if(!factorization.solve(x, solution))
       return false;
+    y = solution.col(0);
     normalise(y, x);
     const double change = (y - x).norm() / std::sqrt(double(n));
     x.swap(y);

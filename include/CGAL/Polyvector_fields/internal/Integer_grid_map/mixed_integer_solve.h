@@ -11,11 +11,12 @@
 // The least-squares problem of the integer-grid map with integer unknowns
 // (compute_integer_grid_map()): minimise |W^(1/2) (B y - d)|^2 over
 // y = (x continuous, n integer). The continuous block is factored once
-// through the solver traits; the integer unknowns are eliminated through
+// through the solver's Sparse_factorization; the integer unknowns are eliminated through
 // their Schur complement and rounded greedily, closest to an integer first,
 // with an exact update of the small dense system after each rounding.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -25,61 +26,29 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-template <typename T, typename = void>
-struct Has_eigen_block_solve : std::false_type {};
-template <typename T>
-struct Has_eigen_block_solve<T, std::void_t<decltype(std::declval<T&>().solver().solve(std::declval<const Eigen::MatrixXd&>()))> >
-  : std::true_type {};
-
-// A factorization through the solver traits, kept alive for several solves.
+// A factorization of a real symmetric positive definite matrix through the
+// solver's Sparse_factorization (the model of the SparseFactorization concept),
+// kept alive for several block solves. `A` must outlive it.
 template <typename SolverTraits>
-class Factored_system
+class Factored_real_system
 {
+  typedef Sparse_factorization<SolverTraits, double> Factorization;
+
 public:
-  explicit Factored_system(const SolverTraits& prototype) : m_solver(prototype) {}
-  bool factor(const Eigen::SparseMatrix<double>& A)
-  {
-    m_storage = typename SolverTraits::Matrix(A);
-    double D = 1;
-    return m_solver.factor(m_storage, D);
-  }
-  // solves A X = B for a dense block B (one solve per column without an Eigen solver)
-  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
-  {
-    X.resize(B.rows(), B.cols());
-    if constexpr(Has_eigen_block_solve<SolverTraits>::value)
-    {
-      X = m_solver.solver().solve(B);
-      if(m_solver.solver().info() != Eigen::Success)
-        return false;
-    }
-    else
-    {
-      typename SolverTraits::Vector b(B.rows()), x(B.rows());
-      for(Eigen::Index j = 0; j < B.cols(); ++j)
-      {
-        for(Eigen::Index i = 0; i < B.rows(); ++i)
-          b[i] = B(i, j);
-        if(!m_solver.linear_solver(b, x))
-          return false;
-        for(Eigen::Index i = 0; i < B.rows(); ++i)
-          X(i, j) = x[i];
-      }
-    }
-    return X.allFinite();
-  }
+  explicit Factored_real_system(const SolverTraits& prototype) : m_factorization(prototype) {}
+  bool factor(const Eigen::SparseMatrix<double>& A) { return m_factorization.analyze(A) && m_factorization.factorize(A); }
+  // solves A X = B for a dense block B, all its columns at once
+  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) { return m_factorization.solve(B, X) && X.allFinite(); }
 
 private:
-  SolverTraits m_solver;
-  typename SolverTraits::Matrix m_storage;
+  typename Factorization::Solver_scope m_scope;
+  Factorization m_factorization;
 };
 
 inline double seconds_since(std::chrono::steady_clock::time_point t)
@@ -113,7 +82,7 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
   result.time_assembly += seconds_since(t);
 
   t = std::chrono::steady_clock::now();
-  Factored_system<SolverTraits> system(prototype);
+  Factored_real_system<SolverTraits> system(prototype);
   if(!system.factor(Kxx))
     return Error_code::SOLVER_FAILURE;
   ++result.factorizations;
@@ -252,7 +221,7 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
       r.col(0) = BrT * dr;
       result.time_assembly += seconds_since(t1);
       const auto t2 = std::chrono::steady_clock::now();
-      Factored_system<SolverTraits> reduced(prototype);
+      Factored_real_system<SolverTraits> reduced(prototype);
       Eigen::MatrixXd sol;
       if(!reduced.factor(Kr) || !reduced.solve(r, sol))
         return Error_code::SOLVER_FAILURE;

@@ -8,9 +8,8 @@
 #ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_AMG_FACTORIZATION_H
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_AMG_FACTORIZATION_H
 
-// The factorization protocol of internal/Factorization.h for
-// Amg_sparse_solver (conjugate gradient preconditioned by
-// internal/Smoothed_aggregation.h):
+// The model of the SparseFactorization concept for Amg_sparse_solver
+// (conjugate gradient preconditioned by internal/Solvers/Smoothed_aggregation.h):
 //
 //   share_analysis(s)  all blocks of a system share the structure of the
 //                      hierarchy (aggregates, spanning trees, patterns of the
@@ -28,8 +27,9 @@
 //                      if CG does not converge, a direct factorization of the
 //                      same matrix finishes the solve.
 
-#include <CGAL/Polyvector_fields/Amg_solver.h>
-#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/Smoothed_aggregation.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
@@ -43,24 +43,29 @@
 
 namespace CGAL {
 namespace Polyvector_fields {
-namespace internal {
-
 template <>
-class Factorization<Amg_sparse_solver>
+class Sparse_factorization<Amg_sparse_solver, std::complex<double> >
 {
+  typedef internal::Sparse_matrix Sparse_matrix;
+  typedef internal::Dense_vector Dense_vector;
+  typedef internal::Complex Complex;
+  typedef internal::Timer Timer;
+
 public:
-  typedef amg::Structure Shared_analysis;
+  typedef internal::Sparse_matrix Matrix;
+  typedef Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> Dense_matrix;
+  typedef internal::amg::Structure Shared_analysis;
   struct Solver_scope
   {};
   // Each factorization owns its values; the shared structure is only read once built.
   static constexpr bool is_thread_safe = true;
   static constexpr bool keeps_matrix = false;  // the values are copied into the hierarchy
 
-  explicit Factorization(const Amg_sparse_solver& solver = Amg_sparse_solver())
+  explicit Sparse_factorization(const Amg_sparse_solver& solver = Amg_sparse_solver())
     : m_parameters(solver.parameters()), m_statistics(solver.statistics_sink())
   {}
-  Factorization(const Factorization&) = delete;
-  Factorization& operator=(const Factorization&) = delete;
+  Sparse_factorization(const Sparse_factorization&) = delete;
+  Sparse_factorization& operator=(const Sparse_factorization&) = delete;
 
   void share_analysis(const std::shared_ptr<Shared_analysis>& s) { m_structure = s; }
 
@@ -77,15 +82,15 @@ public:
     const bool built = !m_structure->computed;
     if(built)
     {
-      amg::Pattern fine;
+      internal::amg::Pattern fine;
       fine.rows = fine.cols = int(A.rows());
       fine.ptr.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
       fine.idx.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
       // A Hermitian pattern is symmetric: its columns are its rows.
-      amg::build_structure(std::move(fine), m_parameters, *m_structure);
+      internal::amg::build_structure(std::move(fine), m_parameters, *m_structure);
       m_structure->input_fingerprint = fingerprint;
     }
-    m_hierarchy.reset(new amg::Hierarchy);
+    m_hierarchy.reset(new internal::amg::Hierarchy);
     m_hierarchy->structure = m_structure.get();
     m_hierarchy->sweeps = m_parameters.sweeps;
     m_factored = false;
@@ -155,6 +160,20 @@ public:
     return ok;
   }
 
+  // One conjugate-gradient solve per column of B.
+  bool solve(const Dense_matrix& B, Dense_matrix& X)
+  {
+    X.resize(B.rows(), B.cols());
+    for(Eigen::Index j = 0; j < B.cols(); ++j)
+    {
+      Dense_vector x;
+      if(!solve(Dense_vector(B.col(j)), x))
+        return false;
+      X.col(j) = x;
+    }
+    return true;
+  }
+
   bool solve(const Dense_vector& b, Dense_vector& x)
   {
     Timer timer;
@@ -176,7 +195,7 @@ public:
       x0.resize(n);
     double residual = 0;
     bool converged = false;
-    const int it = amg::pcg(*m_hierarchy, bp.data(), x0.data(), n, m_parameters.tolerance, m_parameters.max_iterations,
+    const int it = internal::amg::pcg(*m_hierarchy, bp.data(), x0.data(), n, m_parameters.tolerance, m_parameters.max_iterations,
                             residual, converged, warm);
     if(it < 0)
       return false;  // not positive definite
@@ -231,7 +250,7 @@ private:
   {
     if(!m_direct)
     {
-      const amg::Pattern& P = m_hierarchy->structure->levels[0].A;
+      const internal::amg::Pattern& P = m_hierarchy->structure->levels[0].A;
       const std::vector<Complex>& a = m_hierarchy->levels[0].a;
       Sparse_matrix A(P.rows, P.rows);
       A.resizeNonZeros(Eigen::Index(P.nnz()));
@@ -247,17 +266,16 @@ private:
     return m_direct->info() == Eigen::Success;
   }
 
-  amg::Parameters m_parameters;
-  std::shared_ptr<Amg_statistics_sink> m_statistics;
+  internal::amg::Parameters m_parameters;
+  std::shared_ptr<internal::Amg_statistics_sink> m_statistics;
   std::shared_ptr<Shared_analysis> m_structure;
-  std::unique_ptr<amg::Hierarchy> m_hierarchy;
+  std::unique_ptr<internal::amg::Hierarchy> m_hierarchy;
   bool m_factored = false;
   int m_fresh_iterations = -1, m_last_iterations = 0;
   Dense_vector m_last;
   std::unique_ptr<Eigen::SimplicialLDLT<Sparse_matrix> > m_direct;
 };
 
-} // namespace internal
 } // namespace Polyvector_fields
 } // namespace CGAL
 

@@ -9,19 +9,17 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_BLOCK_FACTORIZATIONS_H
 
 // The factorizations of the blocks of one linear system (one per coefficient
-// degree, or one for coupled degrees). All blocks have one sparsity pattern:
-// they share one symbolic analysis, computed on the first block; then the
-// blocks are factored, refactored and solved independently, in parallel when
-// allowed (TBB and a solver whose Factorization is thread safe). Each block is
-// computed by the same operations whatever the thread, so a parallel run is
-// bit-identical to a sequential one.
+// degree, or one for coupled degrees), each a Sparse_factorization (the model
+// of the SparseFactorization concept for the solver). All blocks have one
+// sparsity pattern: they share one symbolic analysis, computed on the first
+// block; then the blocks are factored, refactored and solved independently, in
+// parallel when allowed (TBB and a model whose `is_thread_safe` is true). Each
+// block is computed by the same operations whatever the thread, so a parallel
+// run is bit-identical to a sequential one.
 
-#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <cstddef>
@@ -33,31 +31,30 @@ namespace Polyvector_fields {
 namespace internal {
 
 // Runs task(b) for b = 0 .. blocks-1, in parallel when `parallel` (and TBB is
-// linked); returns whether every task returned true.
+// linked); returns whether every task returned true. One after the other,
+// the first failure stops the loop.
 template <typename Task>
 bool for_each_block(std::size_t blocks, bool parallel, const Task& task)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  if(parallel && blocks > 1)
+  if(!parallel || blocks < 2)
   {
-    std::vector<char> ok(blocks, 0);
-    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) { ok[b] = task(b) ? 1 : 0; });
-    return std::find(ok.begin(), ok.end(), 0) == ok.end();
+    for(std::size_t b = 0; b < blocks; ++b)
+      if(!task(b))
+        return false;
+    return true;
   }
-#else
-  (void)parallel;
-#endif
-  for(std::size_t b = 0; b < blocks; ++b)
-    if(!task(b))
-      return false;
-  return true;
+  std::vector<char> ok(blocks, 0);
+  for_each_index(true, blocks, [&](std::size_t b) { ok[b] = task(b) ? 1 : 0; });
+  return std::find(ok.begin(), ok.end(), 0) == ok.end();
 }
 
-template <typename SolverTraits>
+template <typename SolverTraits, typename Scalar = Complex>
 class Block_factorizations
 {
 public:
-  typedef Factorization<SolverTraits> Block;
+  typedef Sparse_factorization<SolverTraits, Scalar> Block;
+  typedef typename Block::Matrix Matrix;
+  typedef typename Block::Dense_matrix Dense_matrix;
   typedef typename Block::Solver_scope Solver_scope;
   // Whether the factorizations may keep references to the matrices.
   static constexpr bool keeps_matrices = Block::keeps_matrix;
@@ -73,7 +70,7 @@ public:
   // A new shared analysis on matrices[0], then the numeric factorization of
   // every block. The matrices must outlive the factorizations if
   // `keeps_matrices`.
-  bool factor(const std::vector<Sparse_matrix>& matrices)
+  bool factor(const std::vector<Matrix>& matrices)
   {
     m_blocks.clear();
     const auto analysis = std::make_shared<typename Block::Shared_analysis>();
@@ -93,14 +90,15 @@ public:
   }
 
   // The numeric factorization of new values on the analysed pattern.
-  bool refactor(const std::vector<Sparse_matrix>& matrices)
+  bool refactor(const std::vector<Matrix>& matrices)
   {
     if(matrices.empty() || matrices[0].rows() == 0)
       return true;
     return for_each_block(matrices.size(), m_parallel, [&](std::size_t b) { return m_blocks[b]->factorize(matrices[b]); });
   }
 
-  bool solve(std::size_t b, const Dense_vector& rhs, Dense_vector& x) { return m_blocks[b]->solve(rhs, x); }
+  // Solves block b for the columns of `B`.
+  bool solve(std::size_t b, const Dense_matrix& B, Dense_matrix& X) { return m_blocks[b]->solve(B, X); }
 
 private:
   SolverTraits m_prototype;

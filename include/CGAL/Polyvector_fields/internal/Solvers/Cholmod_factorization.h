@@ -8,12 +8,12 @@
 #ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_CHOLMOD_FACTORIZATION_H
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_CHOLMOD_FACTORIZATION_H
 
-// The package's Factorization for `Cholmod_sparse_solver`, driving CHOLMOD's C
+// The model of the SparseFactorization concept for `Cholmod_sparse_solver`, driving CHOLMOD's C
 // interface directly rather than through Eigen's wrapper, for two reasons:
 // - all blocks of a system share one pattern, so CHOLMOD's symbolic analysis
 //   (fill-reducing ordering, elimination tree, supernodes) is done once, on
 //   the first block, and each block factors a copy of that symbolic factor;
-// - each Factorization owns its `cholmod_common`, so that the blocks can be
+// - each Sparse_factorization owns its `cholmod_common`, so that the blocks can be
 //   factored at the same time in different threads (CHOLMOD is reentrant as
 //   long as no two threads share a `cholmod_common`).
 // The matrices are given to CHOLMOD without a copy: full Hermitian storage
@@ -23,7 +23,8 @@
 // between simplicial LDL^* and supernodal LL^* (by the ratio of flops to
 // factor entries), as in Eigen's `CholmodDecomposition` default mode.
 
-#include <CGAL/Polyvector_fields/internal/Solvers/Factorization.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -180,26 +181,33 @@ inline cholmod_sparse cholmod_view(const Sparse_matrix& A)
   return S;
 }
 
+} // namespace internal
+
 template <>
-class Factorization<Cholmod_sparse_solver>
+class Sparse_factorization<Cholmod_sparse_solver, std::complex<double> >
 {
+  typedef internal::Sparse_matrix Sparse_matrix;
+  typedef internal::Complex Complex;
+
 public:
-  typedef Cholmod_symbolic_analysis Shared_analysis;
-  typedef Single_threaded_blas_scope Solver_scope;
+  typedef internal::Sparse_matrix Matrix;
+  typedef Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> Dense_matrix;
+  typedef internal::Cholmod_symbolic_analysis Shared_analysis;
+  typedef internal::Single_threaded_blas_scope Solver_scope;
   static constexpr bool is_thread_safe = true;
   static constexpr bool keeps_matrix = false;  // CHOLMOD reads the matrix during the call only
 
-  Factorization() {}
-  explicit Factorization(const Cholmod_sparse_solver&) {}
+  Sparse_factorization() {}
+  explicit Sparse_factorization(const Cholmod_sparse_solver&) {}
 
-  ~Factorization()
+  ~Sparse_factorization()
   {
     if(m_factor != nullptr)
       cholmod_free_factor(&m_factor, m_workspace.get());
   }
 
-  Factorization(const Factorization&) = delete;
-  Factorization& operator=(const Factorization&) = delete;
+  Sparse_factorization(const Sparse_factorization&) = delete;
+  Sparse_factorization& operator=(const Sparse_factorization&) = delete;
 
   void share_analysis(const std::shared_ptr<Shared_analysis>& analysis) { m_analysis = analysis; }
 
@@ -213,7 +221,7 @@ public:
       m_analysis = std::make_shared<Shared_analysis>();
     if(m_factor != nullptr)
       cholmod_free_factor(&m_factor, m_workspace.get());
-    cholmod_sparse S = cholmod_view(A);
+    cholmod_sparse S = internal::cholmod_view(A);
     if(m_analysis->symbolic == nullptr)
     {
       m_analysis->symbolic = cholmod_analyze(&S, m_analysis->workspace.get());
@@ -228,7 +236,7 @@ public:
   {
     if(m_factor == nullptr || !A.isCompressed())
       return false;
-    cholmod_sparse S = cholmod_view(A);
+    cholmod_sparse S = internal::cholmod_view(A);
     cholmod_common* common = m_workspace.get();
     if(!cholmod_factorize(&S, m_factor, common))
       return false;
@@ -249,22 +257,23 @@ public:
     return true;
   }
 
-  bool solve(const Dense_vector& b, Dense_vector& x)
+  // All the columns of B in one call.
+  bool solve(const Dense_matrix& b, Dense_matrix& x)
   {
-    if(m_factor == nullptr || std::size_t(b.size()) != m_factor->n)
+    if(m_factor == nullptr || std::size_t(b.rows()) != m_factor->n)
       return false;
     cholmod_dense B;
     std::memset(&B, 0, sizeof(B));
     B.nrow = m_factor->n;
-    B.ncol = 1;
-    B.nzmax = m_factor->n;
+    B.ncol = std::size_t(b.cols());
+    B.nzmax = m_factor->n * std::size_t(b.cols());
     B.d = m_factor->n;
     B.x = const_cast<Complex*>(b.data());
     B.z = nullptr;
     B.xtype = CHOLMOD_COMPLEX;
     B.dtype = CHOLMOD_DOUBLE;
     cholmod_common* common = m_workspace.get();
-    x.resize(b.size());  // before CHOLMOD allocates: nothing below throws
+    x.resize(b.rows(), b.cols());  // before CHOLMOD allocates: nothing below throws
     cholmod_dense* X = cholmod_solve(CHOLMOD_A, m_factor, &B, common);
     if(X == nullptr)
       return false;
@@ -274,12 +283,11 @@ public:
   }
 
 private:
-  Cholmod_workspace m_workspace;
+  internal::Cholmod_workspace m_workspace;
   std::shared_ptr<Shared_analysis> m_analysis;
   cholmod_factor* m_factor = nullptr;
 };
 
-} // namespace internal
 } // namespace Polyvector_fields
 } // namespace CGAL
 

@@ -54,9 +54,6 @@
 
 #include <CGAL/Polyvector_fields/internal/parallel.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -166,8 +163,9 @@ struct Structure
   }
 };
 
-// Independent chunks of rows, run in parallel when TBB is linked (each row is
-// computed by the same operations whatever the chunk: deterministic).
+// Independent chunks of rows, run in parallel (for_each_index) when TBB is
+// linked: each row is computed by the same operations whatever the chunk and
+// the thread, so the result is deterministic.
 inline int chunk_count(int rows)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -176,20 +174,6 @@ inline int chunk_count(int rows)
   (void)rows;
   return 1;
 #endif
-}
-
-template <typename Task>
-void for_each_chunk(int chunks, const Task& task)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(chunks > 1)
-  {
-    tbb::parallel_for(0, chunks, [&](int c) { task(c); });
-    return;
-  }
-#endif
-  for(int c = 0; c < chunks; ++c)
-    task(c);
 }
 
 // ---------------------------------------------------------------------------
@@ -425,7 +409,8 @@ inline void prolongator_structure(Level_structure& L, Pattern& coarse)
   coarse.ptr.assign(std::size_t(nc) + 1, 0);
   const int chunks = chunk_count(nc);
   std::vector<std::vector<int> > chunk_idx(static_cast<std::size_t>(chunks));
-  for_each_chunk(chunks, [&](int c) {
+  for_each_index(chunks > 1, std::size_t(chunks), [&](std::size_t chunk) {
+    const int c = int(chunk);
     const int first = int((long long)nc * c / chunks), last = int((long long)nc * (c + 1) / chunks);
     std::vector<int> mark(std::size_t(nc), -1);
     std::vector<int>& idx = chunk_idx[std::size_t(c)];
@@ -904,7 +889,8 @@ private:
     const Complex* a = V.a.data();
     const Prolongator_value* p = V.p.data();
     const int chunks = chunk_count(nc);
-    for_each_chunk(chunks, [&](int chunk) {
+    for_each_index(chunks > 1, std::size_t(chunks), [&](std::size_t chunk_index) {
+      const int chunk = int(chunk_index);
       const int first = int((long long)nc * chunk / chunks), last = int((long long)nc * (chunk + 1) / chunks);
       std::vector<double> acc(2 * std::size_t(nc), 0.0);
       for(int c = first; c < last; ++c)

@@ -5,10 +5,10 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_AMG_SOLVER_H
-#define CGAL_POLYVECTOR_FIELDS_AMG_SOLVER_H
+#ifndef CGAL_POLYVECTOR_FIELDS_AMG_SPARSE_SOLVER_H
+#define CGAL_POLYVECTOR_FIELDS_AMG_SPARSE_SOLVER_H
 
-/// \file Amg_solver.h
+/// \file Amg_sparse_solver.h
 ///
 /// An iterative solver whose cost grows linearly with the mesh: conjugate
 /// gradient preconditioned by smoothed-aggregation multigrid.
@@ -77,10 +77,12 @@ private:
   Amg_statistics m_statistics;
 };
 
-template <typename SolverTraits>
-class Factorization;
-
 } // namespace internal
+
+/// \cond SKIP_IN_MANUAL
+template <typename SolverTraits, typename Scalar>
+class Sparse_factorization;
+/// \endcond
 
 /// \ingroup PkgPolyvectorFieldsSolvers
 ///
@@ -203,13 +205,13 @@ public:
 private:
   Parameters m_parameters;
   std::shared_ptr<internal::Amg_statistics_sink> m_statistics;
-  std::shared_ptr<internal::Factorization<Amg_sparse_solver> > m_factorization;  // for factor() / linear_solver()
+  std::shared_ptr<Sparse_factorization<Amg_sparse_solver, std::complex<double> > > m_factorization;  // for factor() / linear_solver()
 };
 
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-// The factorization behind the class (it needs the class complete).
+// The model of SparseFactorization for the class, beside it (it needs the class complete).
 #include <CGAL/Polyvector_fields/internal/Solvers/Amg_factorization.h>
 
 namespace CGAL {
@@ -218,7 +220,7 @@ namespace Polyvector_fields {
 inline bool Amg_sparse_solver::factor(const Matrix& A, NT& D)
 {
   D = 1;
-  m_factorization = std::make_shared<internal::Factorization<Amg_sparse_solver> >(*this);
+  m_factorization = std::make_shared<Sparse_factorization<Amg_sparse_solver, std::complex<double> > >(*this);
   const internal::Sparse_matrix& M = A.eigen_object();
   internal::Sparse_matrix compressed;
   const internal::Sparse_matrix* input = &M;
@@ -245,4 +247,4 @@ inline bool Amg_sparse_solver::linear_solver(const Vector& B, Vector& X)
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_AMG_SOLVER_H
+#endif // CGAL_POLYVECTOR_FIELDS_AMG_SPARSE_SOLVER_H

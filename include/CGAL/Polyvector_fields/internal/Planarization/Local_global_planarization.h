@@ -1,0 +1,364 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_PLANARIZATION_LOCAL_GLOBAL_PLANARIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_PLANARIZATION_LOCAL_GLOBAL_PLANARIZATION_H
+
+// The local-global planarization of a quad mesh behind planarize_quad_mesh()
+// (after Liu, Pottmann, Wallner, Yang and Wang 2006). Its energy is
+//   sum_f |C (X_f - P_f)|^2 + wc sum_i |x_i - a_i|^2 + wf sum_j |D_j X - b_j|^2:
+// - the local step: P_f, the four vertices of quad f projected onto their
+//   best-fit plane; C centres them;
+// - closeness: a_i = x_i + beta (s_i - x_i), s_i the closest point of the
+//   reference surface (an AABB tree);
+// - fairness: D_j, the second differences of the polylines through the
+//   interior vertices of valence 4 and along the straight runs of the border,
+//   with b_j = (1 - beta) D_j X.
+// The matrix C^T C + wc I + wf D^T D does not change: it is factored once by
+// the solver's Sparse_factorization (real symmetric positive definite), and
+// every iteration solves for the three coordinates at once.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/Face_numbering.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
+#include <CGAL/Polyvector_fields/quad_planarity.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+struct Planarization_parameters
+{
+  double threshold = 0.01;         // planarity to reach on every face
+  double closeness_weight = 1;     // wc
+  double fairness_weight = 0.1;    // wf
+  double closeness_decay = 0.9;    // the factor of beta at each iteration
+  std::size_t max_iterations = 500;
+};
+
+inline Error_code check_planarization_parameters(const Planarization_parameters& p)
+{
+  if(!std::isfinite(p.threshold) || !std::isfinite(p.closeness_weight) || !std::isfinite(p.fairness_weight) ||
+     !std::isfinite(p.closeness_decay))
+    return Error_code::NON_FINITE_VALUE;
+  if(!(p.threshold > 0) || !(p.closeness_weight > 0) || p.fairness_weight < 0 || !(p.closeness_decay > 0) ||
+     p.closeness_decay > 1)
+    return Error_code::INVALID_PARAMETER;
+  return Error_code::SUCCESS;
+}
+
+// The vertices of a quad mesh numbered 0..n-1, their positions (one row
+// each), and the four vertices of each quad.
+template <typename PolygonMesh>
+struct Quad_mesh_arrays
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  Numbering<vertex_descriptor> index;
+  std::vector<vertex_descriptor> descriptors;
+  Eigen::MatrixXd X;
+  std::vector<std::array<std::size_t, 4> > quads;
+
+  // false if a coordinate is not finite
+  template <typename VertexPointMap>
+  bool build(const PolygonMesh& qm, VertexPointMap vpm)
+  {
+    for(vertex_descriptor v : vertices(qm))
+    {
+      index.add(v);
+      descriptors.push_back(v);
+    }
+    const std::size_t n = descriptors.size();
+    X.resize(Eigen::Index(n), 3);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const auto& p = get(vpm, descriptors[i]);
+      X(Eigen::Index(i), 0) = CGAL::to_double(p.x());
+      X(Eigen::Index(i), 1) = CGAL::to_double(p.y());
+      X(Eigen::Index(i), 2) = CGAL::to_double(p.z());
+    }
+    if(!X.allFinite())
+      return false;
+    for(auto f : faces(qm))
+    {
+      std::array<std::size_t, 4> q;
+      std::size_t i = 0;
+      for(auto h : halfedges_around_face(halfedge(f, qm), qm))
+        q[i++] = index(target(h, qm));
+      quads.push_back(q);
+    }
+    return true;
+  }
+
+  double mean_edge_length(const PolygonMesh& qm) const
+  {
+    double edge_sum = 0;
+    std::size_t edge_count = 0;
+    for(auto e : edges(qm))
+    {
+      const auto h = halfedge(e, qm);
+      edge_sum += (X.row(Eigen::Index(index(source(h, qm)))) - X.row(Eigen::Index(index(target(h, qm))))).norm();
+      ++edge_count;
+    }
+    return edge_sum / double(edge_count);
+  }
+
+  // The largest and the mean planarity of the quads at positions Y.
+  void planarity(const Eigen::MatrixXd& Y, double& mx, double& mean) const
+  {
+    mx = 0;
+    double sum = 0;
+    for(const auto& q : quads)
+    {
+      std::array<std::array<double, 3>, 4> p;
+      for(int k = 0; k < 4; ++k)
+        p[k] = { Y(Eigen::Index(q[k]), 0), Y(Eigen::Index(q[k]), 1), Y(Eigen::Index(q[k]), 2) };
+      const double v = quad_planarity(p[0], p[1], p[2], p[3]);
+      mx = (std::max)(mx, v);
+      sum += v;
+    }
+    mean = sum / double(quads.size());
+  }
+
+  // The second differences x_a - 2 x_i + x_b of the fairness term: the two
+  // polylines through an interior vertex of valence 4, and the border through
+  // a border vertex of degree 3 (a straight run, not a staircase corner).
+  std::vector<std::array<std::size_t, 3> > fairness_rows(const PolygonMesh& qm) const
+  {
+    std::vector<std::array<std::size_t, 3> > rows;
+    for(std::size_t i = 0; i < descriptors.size(); ++i)
+    {
+      const vertex_descriptor v = descriptors[i];
+      std::vector<std::size_t> nb, border_nb;
+      for(auto h : halfedges_around_target(halfedge(v, qm), qm))
+      {
+        nb.push_back(index(source(h, qm)));
+        if(CGAL::is_border_edge(h, qm))
+          border_nb.push_back(index(source(h, qm)));
+      }
+      if(!CGAL::is_border(v, qm))
+      {
+        if(nb.size() == 4)
+        {
+          rows.push_back({ nb[0], i, nb[2] });
+          rows.push_back({ nb[1], i, nb[3] });
+        }
+      }
+      else if(border_nb.size() == 2 && nb.size() == 3)
+        rows.push_back({ border_nb[0], i, border_nb[1] });
+    }
+    return rows;
+  }
+};
+
+// Closest points on a triangle mesh, each query hinted by the previous answer
+// for the same vertex (the vertices move little per iteration).
+template <typename TriangleMesh, typename ReferencePointMap>
+class Closest_points
+{
+  typedef typename boost::property_traits<ReferencePointMap>::value_type Ref_point;
+  typedef typename CGAL::Kernel_traits<Ref_point>::Kernel K;
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, ReferencePointMap> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+
+public:
+  Closest_points(const TriangleMesh& reference, ReferencePointMap rpm)
+    : m_tree(faces(reference).first, faces(reference).second, reference, rpm)
+  {
+    m_tree.accelerate_distance_queries();
+  }
+
+  // S receives the closest points of the rows of Y; mx and mean the largest
+  // and the mean distance.
+  void operator()(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, double& mx, double& mean)
+  {
+    const std::size_t n = std::size_t(Y.rows());
+    if(!m_have_hint)
+      S.resize(Y.rows(), 3);
+    mx = 0;
+    double sum = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Eigen::Index r = Eigen::Index(i);
+      const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
+      const typename K::Point_3 s =
+        m_have_hint ? m_tree.closest_point(q, typename K::Point_3(S(r, 0), S(r, 1), S(r, 2))) : m_tree.closest_point(q);
+      S(r, 0) = CGAL::to_double(s.x());
+      S(r, 1) = CGAL::to_double(s.y());
+      S(r, 2) = CGAL::to_double(s.z());
+      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
+      mx = (std::max)(mx, d);
+      sum += d;
+    }
+    mean = sum / double(n);
+    m_have_hint = true;
+  }
+
+private:
+  Tree m_tree;
+  bool m_have_hint = false;
+};
+
+// The fixed matrix C^T C + wc I + wf D^T D; DtD receives D^T D.
+inline Eigen::SparseMatrix<double> planarization_matrix(std::size_t n, const std::vector<std::array<std::size_t, 4> >& quads,
+                                                        const std::vector<std::array<std::size_t, 3> >& rows, double wc,
+                                                        double wf, Eigen::SparseMatrix<double>& DtD)
+{
+  std::vector<Eigen::Triplet<double> > T;
+  for(const auto& q : quads)
+    for(int a = 0; a < 4; ++a)
+      for(int b = 0; b < 4; ++b)
+        T.emplace_back(Eigen::Index(q[a]), Eigen::Index(q[b]), (a == b ? 1.0 : 0.0) - 0.25);
+  for(std::size_t i = 0; i < n; ++i)
+    T.emplace_back(Eigen::Index(i), Eigen::Index(i), wc);
+  Eigen::SparseMatrix<double> Dm(Eigen::Index(rows.size()), Eigen::Index(n));
+  std::vector<Eigen::Triplet<double> > DT;
+  for(std::size_t r = 0; r < rows.size(); ++r)
+  {
+    DT.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][0]), 1.0);
+    DT.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][1]), -2.0);
+    DT.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][2]), 1.0);
+  }
+  Dm.setFromTriplets(DT.begin(), DT.end());
+  DtD = (Dm.transpose() * Dm).pruned();
+  Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  A.setFromTriplets(T.begin(), T.end());
+  if(wf > 0)
+    A += wf * DtD;
+  return A;
+}
+
+// The local step: for each quad, its vertices projected onto its best-fit
+// plane and centred (C P_f), summed into the rows of its vertices.
+inline Eigen::MatrixXd projected_quads(const Eigen::MatrixXd& X, const std::vector<std::array<std::size_t, 4> >& quads)
+{
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(X.rows(), 3);
+  for(const auto& q : quads)
+  {
+    Eigen::Matrix<double, 4, 3> P;
+    for(int k = 0; k < 4; ++k)
+      P.row(k) = X.row(Eigen::Index(q[k]));
+    const Eigen::RowVector3d c = P.colwise().mean();
+    const Eigen::Matrix<double, 4, 3> Q = P.rowwise() - c;
+    const Eigen::Matrix3d cov = Q.transpose() * Q;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    const Eigen::Vector3d nrm = es.eigenvectors().col(0);
+    for(int k = 0; k < 4; ++k)
+    {
+      const Eigen::RowVector3d r = Q.row(k) - (Q.row(k).dot(nrm.transpose())) * nrm.transpose();
+      rhs.row(Eigen::Index(q[k])) += r;
+    }
+  }
+  return rhs;
+}
+
+// The whole algorithm on checked input (quads, triangles, valid parameters).
+// `result` is filled as far as it was computed; the vertex points of `qm` are
+// written only on SUCCESS.
+template <typename SolverTraits, typename PolygonMesh, typename TriangleMesh, typename VertexPointMap,
+          typename ReferencePointMap, typename Result>
+Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, VertexPointMap vpm,
+                               ReferencePointMap rpm, const Planarization_parameters& p, const SolverTraits& solver,
+                               Result& result)
+{
+  const Timer start;
+  Quad_mesh_arrays<PolygonMesh> mesh;
+  if(!mesh.build(qm, vpm))
+    return Error_code::NON_FINITE_VALUE;
+  const std::size_t n = mesh.descriptors.size();
+  Eigen::MatrixXd& X = mesh.X;
+  result.mean_edge_length = mesh.mean_edge_length(qm);
+
+  Timer t;
+  Closest_points<TriangleMesh, ReferencePointMap> closest(reference, rpm);
+  result.time_tree = t.elapsed();
+  Eigen::MatrixXd S;
+  double dmax, dmean;
+  auto closest_points = [&]() {
+    const Timer t0;
+    closest(X, S, dmax, dmean);
+    result.time_closest += t0.elapsed();
+  };
+  mesh.planarity(X, result.max_planarity_before, result.mean_planarity_before);
+  closest_points();
+  result.max_distance_before = dmax;
+
+  t = Timer();
+  const double wc = p.closeness_weight, wf = p.fairness_weight;
+  const std::vector<std::array<std::size_t, 3> > rows = mesh.fairness_rows(qm);
+  result.fairness_rows = rows.size();
+  Eigen::SparseMatrix<double> DtD;
+  const Eigen::SparseMatrix<double> A = planarization_matrix(n, mesh.quads, rows, wc, wf, DtD);
+  typedef Sparse_factorization<SolverTraits, double> Factorization;
+  typename Factorization::Solver_scope scope;
+  Factorization factorization(solver);
+  if(!factorization.analyze(A) || !factorization.factorize(A))
+    return Error_code::SOLVER_FAILURE;
+  result.time_factorization = t.elapsed();
+
+  const Eigen::MatrixXd X0 = X;
+  double beta = 1;
+  double mx = result.max_planarity_before, mean = result.mean_planarity_before;
+  std::size_t it = 0;
+  while(mx > p.threshold && it < p.max_iterations)
+  {
+    ++it;
+    t = Timer();
+    Eigen::MatrixXd rhs = projected_quads(X, mesh.quads);
+    result.time_local += t.elapsed();
+    closest_points();
+    // closeness (proximal, pulled by beta) and fairness (relaxed by beta)
+    t = Timer();
+    rhs += wc * (X + beta * (S - X));
+    if(wf > 0)
+      rhs += wf * (1 - beta) * (DtD * X);
+    Eigen::MatrixXd Xn;
+    if(!factorization.solve(rhs, Xn) || !Xn.allFinite())
+      return Error_code::SOLVER_FAILURE;
+    X = Xn;
+    result.time_solve += t.elapsed();
+    beta = (std::max)(1e-3, beta * p.closeness_decay);
+    mesh.planarity(X, mx, mean);
+  }
+  result.iterations = it;
+  result.max_planarity_after = mx;
+  result.mean_planarity_after = mean;
+  closest_points();
+  result.max_distance = dmax;
+  result.mean_distance = dmean;
+  result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
+  result.converged = mx <= p.threshold;
+  result.time_total = start.elapsed();
+  if(!result.converged)
+    return Error_code::DID_NOT_CONVERGE;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  for(std::size_t i = 0; i < n; ++i)
+    put(vpm, mesh.descriptors[i], Point(X(Eigen::Index(i), 0), X(Eigen::Index(i), 1), X(Eigen::Index(i), 2)));
+  return Error_code::SUCCESS;
+}
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_PLANARIZATION_LOCAL_GLOBAL_PLANARIZATION_H

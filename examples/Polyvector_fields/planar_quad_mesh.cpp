@@ -24,7 +24,7 @@
 #include <CGAL/Polyvector_fields/conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 
@@ -133,7 +133,7 @@ int main(int argc, char** argv)
   }
   std::cout << num_faces(mesh) << " triangles, " << constraints.size() << " constraints, conjugate field in "
             << conjugate.iterations << " iterations\n"
-            << grid_map.singular_vertices << " singularities, " << grid_map.flipped_faces << " flipped faces in the map\n"
+            << grid_map.comb.singular_vertices << " singularities, " << grid_map.flipped_faces << " flipped faces in the map\n"
             << extraction.quads << " quads, " << extraction.irregular_vertices << " irregular vertices\n"
             << "planarity max " << 100 * before.max << "% mean " << 100 * before.mean << "% -> max "
             << 100 * planarization.max_planarity_after << "% mean " << 100 * planarization.mean_planarity_after << "% in "

@@ -31,7 +31,7 @@
 #include <CGAL/Polyvector_fields/face_frames.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 
 #include <CGAL/Polyvector_fields/IO/quad_mesh.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>

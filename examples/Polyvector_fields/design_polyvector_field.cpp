@@ -1098,12 +1098,12 @@ struct Quad_stage
   double time_extraction = 0, time_planarization = 0;
 };
 
-void make_quad_mesh(const Options& o, const Mesh& tm, const Parametrization& param, Quad_stage& q, Stopwatch& clock)
+void make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, const Parametrization& param, Quad_stage& q, Stopwatch& clock)
 {
   if(o.out_quads.empty())
     return;
   const auto start = std::chrono::steady_clock::now();
-  check(PVF::extract_quad_mesh(tm, param.uv, q.quads, q.extraction), "quad mesh");
+  check(PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction), "quad mesh");
   q.time_extraction = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto planarity = q.quads.add_property_map<Mesh::Face_index, double>("f:pvf_planarity").first;
   check(PVF::quad_planarity(q.quads, planarity, q.before), "planarity");
@@ -1350,7 +1350,7 @@ int run(const Options& o)
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
   const Parametrization param = parametrize(o, input.tm, bundle, field, clock);
   Quad_stage quads;
-  make_quad_mesh(o, input.tm, param, quads, clock);
+  make_quad_mesh(o, input.tm, bundle, param, quads, clock);
   write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
   print_summary(o, input, constraints, field, analysis, param, quads, outputs, clock);
   return EXIT_SUCCESS;

@@ -102,10 +102,11 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // 3. The quad mesh: one vertex per integer point, one edge per iso-line segment (whole quads only).
+  // 3. The quad mesh: one vertex per integer point, one edge per iso-line segment (whole quads only),
+  //    traced through the seams by the exact transitions the map returned.
   Mesh quads;
   PVF::Quad_extraction_result extraction;
-  code = PVF::extract_quad_mesh(mesh, uv, quads, extraction);
+  code = PVF::extract_quad_mesh(bundle, uv, grid_map, quads, extraction);
   if(code != PVF::Error_code::SUCCESS)
   {
     std::cerr << "quad extraction: " << PVF::get_error_message(code) << " (" << extraction.diagnostic << ")" << std::endl;

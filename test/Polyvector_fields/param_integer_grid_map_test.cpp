@@ -415,9 +415,9 @@ TEST(IgmComb, CutIsADiskThroughSingularities)
       EXPECT_EQ(rotation[h], 0);
     }
     EXPECT_EQ(worst, 0.0) << name;
-    EXPECT_EQ(r.comb.singular_vertices, sings.size());
+    EXPECT_EQ(r.singular_vertices, sings.size());
     std::printf("[ %s ] cut edges %zu, non-cut edges where the nearest-u matching differs from the principal one: %zu\n",
-                name.c_str(), r.comb.cut_edges, nearest_disagree);
+                name.c_str(), r.cut_edges, nearest_disagree);
   }
 }
 

@@ -183,21 +183,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 
   // output: snapped to a dyadic grid, so that seams and singularities are exact
   t = std::chrono::steady_clock::now();
-  std::vector<std::complex<double> > uv;
-  std::vector<char> flag;
-  internal::corner_uv(R, y, uv);
-  result.max_seam_residual_before_snapping = internal::seam_residual(M, D, uv);
-  internal::snap_unknowns(y, nx, m, uv);
-  internal::corner_uv(R, y, uv);
-  result.flipped_faces = internal::flipped_faces(S, uv, flag);
-  result.rounded_energy = internal::guidance_energy(S, uv);
-  result.energy_ratio = result.continuous_energy > 0 ? result.rounded_energy / result.continuous_energy : 1.0;
-  result.max_seam_residual = internal::seam_residual(M, D, uv);
-  result.max_singularity_residual = internal::singularity_residual(M, D, uv);
-  result.inconsistencies += internal::exact_seam_transitions(M, D, R, nx, y, result.seam_transitions);
-  typedef typename boost::property_traits<UVMap>::value_type UV;
-  for(std::size_t c = 0; c < 3 * M.F; ++c)
-    put(uv_map, M.halfedge[c], UV{ uv[c].real(), uv[c].imag() });
+  internal::write_snapped_map(M, D, R, S, nx, m, y, uv_map, result);
   result.time_output = internal::seconds_since(t);
   result.time_total = internal::seconds_since(start);
   return Error_code::SUCCESS;

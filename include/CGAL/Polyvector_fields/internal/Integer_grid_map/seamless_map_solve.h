@@ -381,6 +381,30 @@ std::size_t exact_seam_transitions(const CornerMesh& M, const Comb_data& D, cons
   return inconsistencies;
 }
 
+// Snaps the solution y, measures it (flips, energy, residuals), computes the
+// exact seam transitions and writes the uv of every corner. `result` is an
+// Integer_grid_map_result.
+template <typename CornerMesh, typename UVMap, typename Report>
+void write_snapped_map(const CornerMesh& M, const Comb_data& D, const Seamless_reduction& R, const Guidance_system& S,
+                       std::size_t nx, std::size_t m, Eigen::VectorXd& y, UVMap uv_map, Report& result)
+{
+  std::vector<std::complex<double> > uv;
+  std::vector<char> flag;
+  corner_uv(R, y, uv);
+  result.max_seam_residual_before_snapping = seam_residual(M, D, uv);
+  snap_unknowns(y, nx, m, uv);
+  corner_uv(R, y, uv);
+  result.flipped_faces = flipped_faces(S, uv, flag);
+  result.rounded_energy = guidance_energy(S, uv);
+  result.energy_ratio = result.continuous_energy > 0 ? result.rounded_energy / result.continuous_energy : 1.0;
+  result.max_seam_residual = seam_residual(M, D, uv);
+  result.max_singularity_residual = singularity_residual(M, D, uv);
+  result.inconsistencies += exact_seam_transitions(M, D, R, nx, y, result.seam_transitions);
+  typedef typename boost::property_traits<UVMap>::value_type UV;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    put(uv_map, M.halfedge[c], UV{ uv[c].real(), uv[c].imag() });
+}
+
 } // namespace internal
 } // namespace Polyvector_fields
 } // namespace CGAL

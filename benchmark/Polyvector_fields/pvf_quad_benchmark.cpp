@@ -22,7 +22,7 @@
 #include <CGAL/Polyvector_fields/design_polyvector_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>

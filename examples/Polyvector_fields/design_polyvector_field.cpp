@@ -48,7 +48,7 @@
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/frame_field_measures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
@@ -1105,12 +1105,12 @@ struct Quad_stage
   double time_extraction = 0, time_planarization = 0;
 };
 
-void make_quad_mesh(const Options& o, const Mesh& tm, const Parametrization& param, Quad_stage& q, Stopwatch& clock)
+void make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, const Parametrization& param, Quad_stage& q, Stopwatch& clock)
 {
   if(o.out_quads.empty())
     return;
   const auto start = std::chrono::steady_clock::now();
-  check(PVF::extract_quad_mesh(tm, param.uv, q.quads, q.extraction), "quad mesh");
+  check(PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction), "quad mesh");
   q.time_extraction = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto planarity = q.quads.add_property_map<Mesh::Face_index, double>("f:pvf_planarity").first;
   check(PVF::quad_planarity(q.quads, planarity, q.before), "planarity");
@@ -1288,14 +1288,14 @@ void print_summary(const Options& o, const Input_mesh& input, const Constraint_s
   {
     const PVF::Integer_grid_map_result& r = param.result;
     std::cout << "parametrization edge length " << r.target_edge_length << " (mean edge " << r.mean_edge_length << "); "
-              << r.singular_vertices << " singular vertices on integer points, " << r.seam_curves << " seam curves ("
-              << r.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
+              << r.comb.singular_vertices << " singular vertices on integer points, " << r.comb.seam_curves << " seam curves ("
+              << r.comb.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
               << " flipped faces";
     if(r.stiffening_rounds > 0)
       std::cout << " after " << r.stiffening_rounds << " stiffening rounds";
     std::cout << "; worst seam residual " << r.max_seam_residual << "; energy rounded/continuous " << r.energy_ratio;
-    if(r.clamped_faces > 0)
-      std::cout << "; " << r.clamped_faces << " near-degenerate frames clamped";
+    if(r.comb.clamped_faces > 0)
+      std::cout << "; " << r.comb.clamped_faces << " near-degenerate frames clamped";
     const auto old_flags = std::cout.flags();
     const auto old_precision = std::cout.precision();
     std::cout << std::fixed << std::setprecision(3) << "\n                (time: comb and cut " << r.time_comb
@@ -1357,7 +1357,7 @@ int run(const Options& o)
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
   const Parametrization param = parametrize(o, input.tm, bundle, field, clock);
   Quad_stage quads;
-  make_quad_mesh(o, input.tm, param, quads, clock);
+  make_quad_mesh(o, input.tm, bundle, param, quads, clock);
   write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
   print_summary(o, input, constraints, field, analysis, param, quads, outputs, clock);
   return EXIT_SUCCESS;

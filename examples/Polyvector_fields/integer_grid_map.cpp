@@ -22,7 +22,7 @@
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 
 #include <array>
@@ -107,7 +107,7 @@ int main(int argc, char** argv)
   }
   std::cout << result.faces << " faces, " << constraints.size() << " constraints, edge length "
             << result.target_edge_length << "\n"
-            << result.singular_vertices << " singularities, " << result.seam_curves << " seam curves, "
+            << result.comb.singular_vertices << " singularities, " << result.comb.seam_curves << " seam curves, "
             << result.integer_unknowns << " integer unknowns\n"
             << result.flipped_faces << " flipped faces, worst seam residual " << result.max_seam_residual
             << ", rounded/continuous energy " << result.energy_ratio << "\n"

@@ -24,7 +24,7 @@
 #include <CGAL/Polyvector_fields/conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 
@@ -102,10 +102,11 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // 3. The quad mesh: one vertex per integer point, one edge per iso-line segment (whole quads only).
+  // 3. The quad mesh: one vertex per integer point, one edge per iso-line segment (whole quads only),
+  //    traced through the seams by the exact transitions the map returned.
   Mesh quads;
   PVF::Quad_extraction_result extraction;
-  code = PVF::extract_quad_mesh(mesh, uv, quads, extraction);
+  code = PVF::extract_quad_mesh(bundle, uv, grid_map, quads, extraction);
   if(code != PVF::Error_code::SUCCESS)
   {
     std::cerr << "quad extraction: " << PVF::get_error_message(code) << " (" << extraction.diagnostic << ")" << std::endl;
@@ -133,7 +134,7 @@ int main(int argc, char** argv)
   }
   std::cout << num_faces(mesh) << " triangles, " << constraints.size() << " constraints, conjugate field in "
             << conjugate.iterations << " iterations\n"
-            << grid_map.singular_vertices << " singularities, " << grid_map.flipped_faces << " flipped faces in the map\n"
+            << grid_map.comb.singular_vertices << " singularities, " << grid_map.flipped_faces << " flipped faces in the map\n"
             << extraction.quads << " quads, " << extraction.irregular_vertices << " irregular vertices\n"
             << "planarity max " << 100 * before.max << "% mean " << 100 * before.mean << "% -> max "
             << 100 * planarization.max_planarity_after << "% mean " << 100 * planarization.mean_planarity_after << "% in "

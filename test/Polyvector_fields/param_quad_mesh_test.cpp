@@ -31,7 +31,8 @@
 #include <CGAL/Polyvector_fields/face_frames.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
-#include <CGAL/Polyvector_fields/integer_grid_map.h>
+#include <CGAL/Polyvector_fields/comb_frame_field.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 
 #include <CGAL/Polyvector_fields/IO/quad_mesh.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
@@ -416,6 +417,104 @@ INSTANTIATE_TEST_SUITE_P(Quad, QuadClosed, ::testing::Values("bumpy", "eight", "
 
 // Re-gauging every face chart by its own grid symmetry R^r x + t keeps the map seamless
 // (the transitions change): the quad mesh must be the same, bit for bit.
+// The meshing road on one bundle: comb once, map that comb, extract with the
+// map's exact transitions. The map of the comb is the map of the field; every
+// transition maps the uv of its edge exactly (both endpoints) with the comb's
+// rotation; the extraction that consumes them gives the mesh of the uv overload,
+// vertex for vertex; transitions that disagree with the uv are refused.
+TEST(QuadSeams, CombMapAndExtractionCarryTheSeams)
+{
+  Mesh tm = load("bumpy.off");
+  auto curvatures = tm.add_property_map<Face, PVF::Principal_curvatures<Vector> >("f:k").first;
+  std::vector<Constraint> constraints;
+  ASSERT_EQ(PVF::estimate_principal_curvatures(tm, curvatures), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::select_curvature_constraints(tm, curvatures, constraints, PVF::parameters::constrained_fraction(0.01)),
+            PVF::Error_code::SUCCESS);
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> comb;
+  ASSERT_FALSE(comb.is_valid());
+  ASSERT_EQ(PVF::comb_frame_field(bundle, field, comb), PVF::Error_code::SUCCESS);
+  ASSERT_TRUE(comb.is_valid());
+  EXPECT_GT(comb.report().cut_edges, 0u);
+  EXPECT_EQ(comb.number_of_seam_curves(), comb.report().seam_curves);
+
+  auto uv = tm.add_property_map<Halfedge, UV>("h:road_uv").first;
+  auto uv_field = tm.add_property_map<Halfedge, UV>("h:road_uv_field").first;
+  PVF::Integer_grid_map_result map, map_field;
+  ASSERT_EQ(PVF::compute_integer_grid_map(comb, uv, map), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::compute_integer_grid_map(bundle, field, uv_field, map_field), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(map.inconsistencies, 0u);
+  EXPECT_EQ(map.comb.cut_edges, comb.report().cut_edges);
+  EXPECT_EQ(map.factorizations, map_field.factorizations);
+  for(Halfedge h : halfedges(tm))
+    if(!CGAL::is_border(h, tm))
+      ASSERT_EQ(uv[h], uv_field[h]);
+
+  // the transitions: exact on both endpoints, the comb's rotation, identity off the cut
+  ASSERT_EQ(map.seam_transitions.size(), 3 * num_faces(tm));
+  std::size_t translated = 0;
+  for(Halfedge h : halfedges(tm))
+  {
+    if(CGAL::is_border_edge(h, tm))
+      continue;
+    const PVF::Seam_transition& T = map.seam_transitions[comb.corner(h)];
+    ASSERT_EQ(T.rotation, comb.rotation(h));
+    if(!comb.is_cut(h))
+    {
+      ASSERT_EQ(T.rotation, 0);
+      ASSERT_EQ(T.translation[0], 0);
+      ASSERT_EQ(T.translation[1], 0);
+    }
+    translated += T.translation[0] != 0 || T.translation[1] != 0;
+    const Halfedge o = opposite(h, tm);
+    // target(h) is seen by prev(o) in face(o); source(h) by o
+    for(const auto& pair : { std::make_pair(h, prev(o, tm)), std::make_pair(prev(h, tm), o) })
+    {
+      Complex a(uv[pair.first][0], uv[pair.first][1]);
+      for(int k = 0; k < T.rotation; ++k)
+        a *= Complex(0, 1);
+      ASSERT_EQ(a.real() + double(T.translation[0]), uv[pair.second][0]);
+      ASSERT_EQ(a.imag() + double(T.translation[1]), uv[pair.second][1]);
+    }
+  }
+  EXPECT_GT(translated, 0u);
+
+  // extraction with the map's transitions = extraction from the uv, vertex for vertex
+  Mesh from_map, from_uv;
+  PVF::Quad_extraction_result rm, ru;
+  ASSERT_EQ(PVF::extract_quad_mesh(bundle, uv, map, from_map, rm), PVF::Error_code::SUCCESS) << rm.diagnostic;
+  ASSERT_EQ(PVF::extract_quad_mesh(tm, uv, from_uv, ru), PVF::Error_code::SUCCESS) << ru.diagnostic;
+  EXPECT_GT(num_faces(from_map), 100u);
+  ASSERT_EQ(num_vertices(from_map), num_vertices(from_uv));
+  ASSERT_EQ(num_faces(from_map), num_faces(from_uv));
+  for(Vertex v : vertices(from_map))
+    ASSERT_EQ(from_map.point(v), from_uv.point(v));
+  EXPECT_EQ(rm.seam_edges, ru.seam_edges);
+  EXPECT_EQ(rm.integer_points, ru.integer_points);
+
+  // a wrong translation, and transitions of another size, are refused
+  PVF::Integer_grid_map_result wrong = map;
+  for(PVF::Seam_transition& T : wrong.seam_transitions)
+    if(T.translation[0] != 0)
+    {
+      T.translation[0] += 1;
+      break;
+    }
+  Mesh refused;
+  EXPECT_EQ(PVF::extract_quad_mesh(bundle, uv, wrong, refused, rm), PVF::Error_code::NOT_AN_INTEGER_GRID_MAP);
+  EXPECT_FALSE(rm.diagnostic.empty());
+  wrong.seam_transitions.pop_back();
+  EXPECT_EQ(PVF::extract_quad_mesh(bundle, uv, wrong, refused, rm), PVF::Error_code::NOT_AN_INTEGER_GRID_MAP);
+  EXPECT_EQ(num_faces(refused), 0u);
+  // an invalid comb is refused by the map
+  PVF::Frame_field_comb<Bundle> empty;
+  EXPECT_EQ(PVF::compute_integer_grid_map(empty, uv, map), PVF::Error_code::INVALID_PARAMETER);
+}
+
 TEST(QuadSeams, ChartRegaugingGivesTheSameMesh)
 {
   std::unique_ptr<Quad_case> c = make_quad_case("bumpy");

@@ -14,6 +14,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -33,12 +34,6 @@
 namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
-
-template <typename T, typename = void>
-struct Has_xy : std::false_type {};
-template <typename T>
-struct Has_xy<T, std::void_t<decltype(std::declval<const T&>().x()), decltype(std::declval<const T&>().y())> >
-  : std::true_type {};
 
 template <typename UV>
 std::pair<double, double> uv_pair(const UV& p)

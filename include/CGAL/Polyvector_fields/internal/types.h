@@ -9,7 +9,8 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_TYPES_H
 
 // The types that the parts of the package share: complex numbers, the sparse
-// and dense types of the linear systems, 2 pi, and the stage times.
+// and dense types of the linear systems, 2 pi, the stage times, the index
+// that stands for "none" and the test for 2D points with x() and y().
 
 #include <CGAL/number_type_config.h>
 
@@ -19,6 +20,8 @@
 
 #include <complex>
 #include <cstddef>
+#include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Polyvector_fields {
@@ -35,6 +38,16 @@ struct Stage_times
 {
   double assembly = 0, factorization = 0, solve = 0;
 };
+
+// The index of no element (no opposite corner on the border, no point, ...).
+constexpr std::size_t npos = std::size_t(-1);
+
+// Whether T has x() and y() (a 2D point), rather than [0] and [1].
+template <typename T, typename = void>
+struct Has_xy : std::false_type {};
+template <typename T>
+struct Has_xy<T, std::void_t<decltype(std::declval<const T&>().x()), decltype(std::declval<const T&>().y())> >
+  : std::true_type {};
 
 } // namespace internal
 } // namespace Polyvector_fields

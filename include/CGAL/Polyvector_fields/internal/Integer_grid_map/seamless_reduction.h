@@ -33,8 +33,12 @@
 #ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_REDUCTION_H
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_REDUCTION_H
 
-#include <CGAL/Polyvector_fields/comb_frame_field.h>
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/comb_and_cut.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -83,12 +87,12 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
   for(std::size_t v = 0; v < V; ++v)
   {
     const std::size_t c0 = M.vertex_corner[v];
-    if(c0 == igm_npos)
+    if(c0 == npos)
       continue;
-    std::size_t start = igm_npos, c = c0, guard = 0;
+    std::size_t start = npos, c = c0, guard = 0;
     if(M.border_vertex[v])
     {
-      while(M.cw(c) != igm_npos && guard++ < C)
+      while(M.cw(c) != npos && guard++ < C)
         c = M.cw(c);
       start = c;
     }
@@ -102,8 +106,8 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
           break;
         }
         c = M.cw(c);
-      } while(c != c0 && c != igm_npos && guard++ < C);
-      if(start == igm_npos)
+      } while(c != c0 && c != npos && guard++ < C);
+      if(start == npos)
         start = c0;
     }
     int a = 0;
@@ -116,7 +120,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
       corner_a[c] = a;
       corner_g[c] = g;
       const std::size_t nc = M.ccw(c);
-      if(nc == igm_npos)
+      if(nc == npos)
         break;
       if(D.seam[c])
       {
@@ -170,7 +174,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
       adjacent[D.curves[q].end].emplace_back(q, D.curves[q].start);
   }
   std::vector<char> seen(V, 0), visited(V, 0);
-  std::vector<std::size_t> parent_arc(V, igm_npos), order, roots;
+  std::vector<std::size_t> parent_arc(V, npos), order, roots;
   for(std::size_t v = 0; v < V; ++v)
   {
     if(!D.node[v] || visited[v])
@@ -210,14 +214,14 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
   }
   std::vector<char> eliminated(Q, 0);
   for(std::size_t v = 0; v < V; ++v)
-    if(parent_arc[v] != igm_npos && relation[v].present)
+    if(parent_arc[v] != npos && relation[v].present)
       eliminated[parent_arc[v]] = 1;
 
   // 3. Integer variables: singular vertices, then the curves that are not eliminated.
-  std::vector<std::size_t> vertex_var(V, igm_npos), curve_var(Q, igm_npos);
+  std::vector<std::size_t> vertex_var(V, npos), curve_var(Q, npos);
   std::size_t vars = 0;
   for(std::size_t v = 0; v < V; ++v)
-    if(D.index[v] != 0 && M.vertex_corner[v] != igm_npos)
+    if(D.index[v] != 0 && M.vertex_corner[v] != npos)
       vertex_var[v] = vars++;
   std::vector<Gform> T(Q);
   for(std::size_t q = 0; q < Q; ++q)
@@ -241,7 +245,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
     const Gint zc = i_power(relation[v].A) - Gint(1, 0);
     if(!zc.is_zero())
     {
-      if(vertex_var[v] == igm_npos)
+      if(vertex_var[v] == npos)
         ++R.inconsistencies;
       else
         add_scaled(out, Gform{ { vertex_var[v], Gint(1, 0) } }, zc);
@@ -250,7 +254,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
   for(auto it = order.rbegin(); it != order.rend(); ++it)
   {
     const std::size_t v = *it, q = parent_arc[v];
-    if(q == igm_npos || !eliminated[q])
+    if(q == npos || !eliminated[q])
       continue;
     const auto found = relation[v].G.find(q);
     if(found == relation[v].G.end() || !found->second.is_unit())
@@ -283,7 +287,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
     if(!relation[root].present)
       continue;
     Gform rest;
-    substituted_relation(root, igm_npos, rest);
+    substituted_relation(root, npos, rest);
     rest = resolve(rest);
     if(rest.empty())
       continue;
@@ -328,29 +332,29 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
   std::size_t components = 0;
   for(std::size_t f = 0; f < M.F; ++f)
     components = (std::max)(components, D.component[f] + 1);
-  std::vector<std::size_t> pinned_singular(components, igm_npos), first_vertex(components, igm_npos);
+  std::vector<std::size_t> pinned_singular(components, npos), first_vertex(components, npos);
   for(std::size_t v = 0; v < V; ++v)
   {
-    if(M.vertex_corner[v] == igm_npos)
+    if(M.vertex_corner[v] == npos)
       continue;
     const std::size_t comp = D.component[CornerMesh::face(M.vertex_corner[v])];
-    if(first_vertex[comp] == igm_npos)
+    if(first_vertex[comp] == npos)
       first_vertex[comp] = v;
-    if(vertex_var[v] != igm_npos && pinned_singular[comp] == igm_npos && !substitution.count(vertex_var[v]))
+    if(vertex_var[v] != npos && pinned_singular[comp] == npos && !substitution.count(vertex_var[v]))
       pinned_singular[comp] = v;
   }
   for(std::size_t comp = 0; comp < components; ++comp)
-    if(pinned_singular[comp] != igm_npos)
+    if(pinned_singular[comp] != npos)
       substitution[vertex_var[pinned_singular[comp]]] = Gform();
-  std::vector<std::size_t> column_of_vertex(V, igm_npos);
+  std::vector<std::size_t> column_of_vertex(V, npos);
   for(std::size_t v = 0; v < V; ++v)
   {
-    if(M.vertex_corner[v] == igm_npos)
+    if(M.vertex_corner[v] == npos)
       continue;
     const std::size_t comp = D.component[CornerMesh::face(M.vertex_corner[v])];
-    if(vertex_var[v] != igm_npos)
+    if(vertex_var[v] != npos)
       R.vertex_kind[v] = 1;
-    else if(pinned_singular[comp] == igm_npos && first_vertex[comp] == v)
+    else if(pinned_singular[comp] == npos && first_vertex[comp] == v)
       R.vertex_kind[v] = 2;
     else
     {
@@ -359,7 +363,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
     }
   }
   const std::size_t nx = 2 * R.continuous_vertices;
-  std::vector<std::size_t> column_of_var(vars, igm_npos);
+  std::vector<std::size_t> column_of_var(vars, npos);
   for(std::size_t j = 0; j < vars; ++j)
     if(!substitution.count(j))
       column_of_var[j] = nx + 2 * R.integer_variables++;
@@ -373,7 +377,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
     Gform W;
     for(const auto& kv : corner_g[c])
       add_scaled(W, T[kv.first], kv.second);
-    if(vertex_var[v] != igm_npos)
+    if(vertex_var[v] != npos)
       add_scaled(W, Gform{ { vertex_var[v], Gint(1, 0) } }, rot);
     W = resolve(W);
     auto& terms = R.corner_terms[c];
@@ -396,7 +400,7 @@ double seam_residual(const CornerMesh& M, const Comb_data& D, const std::vector<
   for(std::size_t c = 0; c < 3 * M.F; ++c)
   {
     const std::size_t o = M.opposite[c];
-    if(o == igm_npos || o < c)
+    if(o == npos || o < c)
       continue;
     const Gint rg = i_power(D.seam[c] ? D.rotation[c] : 0);
     const Complex rot(double(rg.re), double(rg.im));
@@ -410,6 +414,20 @@ double seam_residual(const CornerMesh& M, const Comb_data& D, const std::vector<
     if(!D.seam[c])
       worst = (std::max)(worst, std::abs(t));
   }
+  return worst;
+}
+
+// Worst distance of the value of a singular vertex (in any of its corners) to the integer grid.
+template <typename CornerMesh>
+double singularity_residual(const CornerMesh& M, const Comb_data& D, const std::vector<std::complex<double> >& uv)
+{
+  double worst = 0;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    if(D.index[M.target[c]] != 0)
+    {
+      const std::complex<double> z = uv[c];
+      worst = (std::max)({ worst, std::abs(z.real() - std::round(z.real())), std::abs(z.imag() - std::round(z.imag())) });
+    }
   return worst;
 }
 

@@ -1,0 +1,333 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_COMPUTE_INTEGER_GRID_MAP_H
+#define CGAL_POLYVECTOR_FIELDS_COMPUTE_INTEGER_GRID_MAP_H
+
+/// \file compute_integer_grid_map.h
+/// The mixed-integer quadrangulation of Bommes, Zimmer and Kobbelt (2009)
+/// from a (possibly non-orthogonal) frame field: a seamless map whose integer
+/// iso-lines follow the field, with every singular vertex on an integer point.
+/// It works on one `Tangent_bundle` and on the cut graph of `comb_frame_field()`:
+/// the seams are found once, and the map returns their exact transitions for
+/// `extract_quad_mesh()`.
+
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
+#include <CGAL/Polyvector_fields/comb_frame_field.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/seamless_map_solve.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/seamless_reduction.h>
+
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#if defined(CGAL_PVF_HAS_CHOLMOD)
+#  include <Eigen/CholmodSupport>
+#endif
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+
+#if defined(DOXYGEN_RUNNING)
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// is the sparse solver of `compute_integer_grid_map()` when none is given, a model
+/// of `SparseLinearAlgebraWithFactorTraits_d` on `double` (the system is real,
+/// symmetric and positive definite): CHOLMOD through Eigen's
+/// `CholmodDecomposition` when the macro `CGAL_PVF_HAS_CHOLMOD` is defined (as
+/// for `Direct_sparse_solver`), Eigen's `SimplicialLDLT` otherwise.
+typedef unspecified_type Default_real_sparse_solver;
+#elif defined(CGAL_PVF_HAS_CHOLMOD)
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> >
+  Default_real_sparse_solver;
+#else
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_real_sparse_solver;
+#endif
+
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// is the transition of a seamless map across an interior edge, from the chart
+/// of `face(h)` to the chart of `face(opposite(h))`: `uv_B = R^rotation uv_A +
+/// translation`, `R` the quarter turn counterclockwise. It is exact: `rotation`
+/// is the combed rotation of the edge and `translation` is computed over the
+/// integers from the map's unknowns.
+struct Seam_transition
+{
+  int rotation = 0;                                   ///< in `0..3`; 0 off the cut graph
+  std::array<std::int64_t, 2> translation{ { 0, 0 } };  ///< integer; 0 off the cut graph
+};
+
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// reports on a run of `compute_integer_grid_map()`, and holds the exact seam
+/// transitions of the map it computed (what `extract_quad_mesh()` consumes).
+struct Integer_grid_map_result
+{
+  Comb_result comb;                       ///< the combing and the cut (clamped faces, singular vertices, all placed on integer points, seam curves, cut edges)
+  std::size_t faces = 0;                  ///< faces of the mesh
+  std::size_t continuous_unknowns = 0;    ///< scalar continuous unknowns (2 per regular vertex, minus pins)
+  std::size_t integer_unknowns = 0;       ///< scalar integer unknowns after the exact reduction (and pins)
+  std::size_t integer_unknowns_before_reduction = 0;  ///< 2 (singular vertices + seam curves)
+  std::size_t extra_integer_relations = 0;///< relations left at the root of a seam tree (expected 0)
+  std::size_t flipped_faces = 0;          ///< faces with det(grad uv) <= 0 in the output
+  std::vector<std::size_t> flipped_per_round;  ///< flipped faces after each stiffening round
+  std::size_t stiffening_rounds = 0;      ///< solves after the first one
+  std::size_t factorizations = 0;         ///< numeric factorizations of the sparse system
+  double target_edge_length = 0;          ///< h used
+  double mean_edge_length = 0;            ///< of the mesh
+  double continuous_energy = 0;           ///< sum A_f |grad uv - J*_f|^2 of the continuous (unrounded) optimum, unit weights
+  double rounded_energy = 0;              ///< the same energy for the output
+  double energy_ratio = 0;                ///< rounded / continuous
+  double max_seam_residual = 0;           ///< worst |uv_B - (R^r uv_A + t)| over cut-edge endpoints, t the nearest integer vector (output)
+  double max_seam_residual_before_snapping = 0;  ///< the same before the values are snapped to a dyadic grid
+  double max_singularity_residual = 0;    ///< worst distance of a singular corner to the integer grid (output)
+  std::size_t inconsistencies = 0;        ///< internal checks that failed (expected 0)
+  // times in seconds
+  double time_comb = 0;           ///< the tangent bundle (when a mesh is given), matching, singularities, combing, cut, seam curves
+  double time_reduction = 0;      ///< sectors, seam relations, exact elimination over Z[i]
+  double time_assembly = 0;       ///< gradient operator and normal equations (all rounds)
+  double time_factorization = 0;  ///< sparse factorizations (all rounds)
+  double time_schur = 0;          ///< solves for the Schur complement of the integer unknowns (all rounds)
+  double time_rounding = 0;       ///< greedy rounding with updates (all rounds)
+  double time_stiffening = 0;     ///< everything spent in rounds after the first
+  double time_output = 0;         ///< snapping, checks and writing the map
+  double time_total = 0;  ///< the whole call
+  /// the exact transition across the edge of every corner, in the numbering of `Frame_field_comb`
+  /// (corner `3f+k`: the `k`-th halfedge of face `f` from `halfedge(face)`, `f` the bundle's index);
+  /// the identity off the cut graph and on the boundary. Filled on success.
+  std::vector<Seam_transition> seam_transitions;
+};
+
+
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// computes a seamless integer-grid map guided by the combed frame field `comb`
+/// (computed by `comb_frame_field()`), on its tangent bundle and cut graph: see
+/// the other overload for the energy, the solve and the output. The seams are
+/// those of `comb` (nothing is combed again); `result.comb` is `comb.report()`
+/// and `result.seam_transitions` the exact transitions of the map.
+///
+/// \tparam Bundle a `Tangent_bundle`
+/// \tparam UVMap as in the other overload
+///
+/// \param comb a valid comb (`comb.is_valid()`)
+/// \param uv_map receives the map, for every halfedge of a face
+/// \param result receives the counts, measures, times and the seam transitions
+/// \param np the named parameters of the other overload but `minimum_frame_angle` (the comb's)
+///            and `vertex_point_map` (the bundle's)
+///
+/// \returns as the other overload; `INVALID_PARAMETER` also if `comb` is not valid.
+template <typename Bundle, typename UVMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap uv_map, Integer_grid_map_result& result,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t, NamedParameters,
+                                                             Default_real_sparse_solver>::type Solver;
+  const auto start = std::chrono::steady_clock::now();
+  result = Integer_grid_map_result();
+  internal::Seamless_map_parameters p;
+  Error_code code = internal::read_seamless_map_parameters(np, p);
+  const Solver solver_prototype = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver());
+  if(code != Error_code::SUCCESS)
+    return code;
+  if(!comb.is_valid())
+    return Error_code::INVALID_PARAMETER;
+  const auto& M = comb.corner_mesh();
+  const internal::Comb_data& D = comb.data();
+  result.comb = comb.report();
+  result.mean_edge_length = internal::mean_edge_length(M);
+  code = internal::check_edge_length(p);
+  if(code != Error_code::SUCCESS)
+    return code;
+  const double h = p.edge_length_given ? p.edge_length : result.mean_edge_length;
+  result.target_edge_length = h;
+  result.faces = M.F;
+  result.inconsistencies += D.pruned_nonzero_rotation;
+
+  // reduced unknowns, guidance system, rounds of solves
+  auto t = std::chrono::steady_clock::now();
+  internal::Seamless_reduction R;
+  code = internal::reduce_seamless_variables(M, D, R);
+  result.inconsistencies += R.inconsistencies;
+  result.extra_integer_relations = R.extra_relations;
+  if(code != Error_code::SUCCESS)
+    return code;
+  const std::size_t nx = 2 * R.continuous_vertices, m = 2 * R.integer_variables;
+  result.continuous_unknowns = nx;
+  result.integer_unknowns = m;
+  result.integer_unknowns_before_reduction = 2 * (result.comb.singular_vertices + result.comb.seam_curves);
+  result.time_reduction = internal::seconds_since(t);
+  t = std::chrono::steady_clock::now();
+  internal::Guidance_system S;
+  internal::assemble_guidance(M, D, R, h, nx + m, S);
+  result.time_assembly += internal::seconds_since(t);
+  Eigen::VectorXd y;
+  code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R, y, result);
+  if(code != Error_code::SUCCESS)
+    return code;
+
+  // output: snapped to a dyadic grid, so that seams and singularities are exact
+  t = std::chrono::steady_clock::now();
+  internal::write_snapped_map(M, D, R, S, nx, m, y, uv_map, result);
+  result.time_output = internal::seconds_since(t);
+  result.time_total = internal::seconds_since(start);
+  return Error_code::SUCCESS;
+}
+
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// computes a seamless integer-grid map of a triangle mesh guided by the frame
+/// field of `coefficient_map` (Bommes, Zimmer, Kobbelt 2009: mixed-integer
+/// quadrangulation).
+///
+/// <b>Combing and cut.</b> The field is cleaned, combed and cut once by
+/// `comb_frame_field()` (same named parameter `minimum_frame_angle`), on the
+/// same tangent bundle, and the map is computed from that comb by the other
+/// overload: a caller who already has the comb calls that one.
+///
+/// <b>Target.</b> In face `f`, with `u`, `v` the combed unit field directions
+/// (see `comb_frame_field()`; clamped faces included) as complex numbers in the
+/// face frame, the target Jacobian is `J*_f = h^-1 [u v]^-1`: moving by `h`
+/// along `u` moves the map by one unit in its first coordinate and not at all
+/// in the second, and the same for `v`. For a non-orthogonal frame this is
+/// the dual basis; the integer iso-lines follow `u` and `v`.
+///
+/// <b>Energy.</b> `sum_f w_f A_f |grad uv - J*_f|^2` over the uv of every
+/// corner, with the seams `uv_B = R^r uv_A + t` (R the quarter turn, r the
+/// rotation of the cut edge, `t` in Z^2 per seam curve) and every singular
+/// vertex on an integer point, by construction: the unknowns are one uv per
+/// vertex (its first sector) and, as integers, the uv of the singular vertices
+/// and the translations of the seam curves that the exact elimination of the
+/// seam relations over the Gaussian integers leaves free. One translation per
+/// component is pinned (a singular vertex at the origin, or the first vertex).
+/// The boundary is free.
+///
+/// <b>Solve.</b> The continuous block is factored once per round (sparse SPD,
+/// `sparse_linear_solver`); the integer unknowns are eliminated through their
+/// Schur complement (dense, small), rounded greedily (closest to an integer
+/// first) with an exact O(m^2) update of the minimiser and of the inverse per
+/// rounding. Then faces with `det(grad uv) <= 0` and the faces around them get
+/// a larger weight and the problem is solved again, at most
+/// `number_of_iterations` times (stiffening); the round with the fewest flips is kept.
+///
+/// <b>Output.</b> `uv_map[h]` is the value at `target(h)` inside `face(h)`. The
+/// values are snapped to a dyadic grid (2^-k, about 1e-12 of a quad), so that
+/// across every seam `uv_B = R^r uv_A + t` holds exactly in floating point and
+/// singular vertices are exactly integer. `result.seam_transitions` holds the
+/// transition of every edge, exact (see `Seam_transition`).
+///
+/// All computations are done in `double`, whatever the kernel of the mesh.
+///
+/// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` (whose bundle is then built
+///         with the named parameter `vertex_point_map`); in both cases the mesh is a triangle mesh
+/// \tparam CoefficientMap a model of `ReadablePropertyMap` from faces to `std::vector<std::complex<double>>`
+///         of size 4: a sign-symmetric 4-PolyVector field (a frame field)
+/// \tparam UVMap a model of `WritablePropertyMap` from halfedges to a type constructible as `{u, v}` from
+///         two `double` values (`Point_2`, `std::array<double, 2>`): the value at `target(h)` inside `face(h)`
+///
+/// \param mesh_or_bundle the mesh, or its tangent bundle
+/// \param coefficient_map the frame field
+/// \param uv_map receives the map, for every halfedge of a face
+/// \param result receives the counts, measures and times (also on failure, as far as they were computed)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{target_edge_length}
+///     \cgalParamDescription{the length `h`, in mesh units, of one unit of uv along the unit field
+///                           directions: the quad size; given with `Polyvector_fields::parameters::target_edge_length()`}
+///     \cgalParamType{`double > 0`}
+///     \cgalParamDefault{the mean edge length of the mesh}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_frame_angle}
+///     \cgalParamDescription{the smallest angle, in radians, between `u` and `v`; see `comb_frame_field()`}
+///     \cgalParamType{`double` in `(0, pi/2]`}
+///     \cgalParamDefault{10 degrees}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the maximum number of stiffening rounds after the first solve}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{20}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stiffening_factor}
+///     \cgalParamDescription{the weight of a face near a flip is multiplied by `1 + stiffening_factor * d`
+///                           at each round, `d` its relative distortion (at least 1 on a flipped face);
+///                           given with `Polyvector_fields::parameters::stiffening_factor()`}
+///     \cgalParamType{`double > 0`}
+///     \cgalParamDefault{1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{rounding_by_refactorization}
+///     \cgalParamDescription{in the first round, refactor the system after each rounding instead of
+///                           updating the Schur complement (a slow reference, for tests and benchmarks);
+///                           given with `Polyvector_fields::parameters::rounding_by_refactorization()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{a model of `SparseLinearAlgebraWithFactorTraits_d` on `double`, copied for each factorization}
+///     \cgalParamDefault{`Default_real_sparse_solver`}
+///   \cgalParamNEnd
+///   \pvfParamVertexPointMap
+/// \cgalNamedParamsEnd
+///
+/// \returns `Error_code::SUCCESS`; a mesh error of the bundle (`EMPTY_MESH`, `NON_TRIANGLE_FACE`,
+///          `DEGENERATE_FACE`) or `NON_MANIFOLD_MESH` (a vertex whose faces do not form a fan);
+///          `NON_FINITE_VALUE` for a coefficient or a parameter; `INVALID_PARAMETER` for a parameter out
+///          of its range (`target_edge_length <= 0`, `minimum_frame_angle`, `stiffening_factor`);
+///          `NOT_A_FRAME_FIELD` or `ZERO_FRAME` as `comb_frame_field()`; `SOLVER_FAILURE` if a factorization
+///          or a solve fails (also if the seam relations could not be eliminated over the Gaussian integers,
+///          which no test mesh has shown). `uv_map` is written only on success; the mesh is never changed.
+///
+/// \sa `comb_frame_field()`, `extract_quad_mesh()`, `IO::write_integer_grid_map_OBJ()`
+template <typename Mesh_or_bundle, typename CoefficientMap, typename UVMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code compute_integer_grid_map(const Mesh_or_bundle& mesh_or_bundle, CoefficientMap coefficient_map,
+                                    UVMap uv_map, Integer_grid_map_result& result,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto start = std::chrono::steady_clock::now();
+  result = Integer_grid_map_result();
+  double min_angle = 0;
+  Error_code code = internal::read_minimum_frame_angle(np, min_angle);
+  if(code != Error_code::SUCCESS)
+    return code;
+  internal::Seamless_map_parameters p;
+  code = internal::read_seamless_map_parameters(np, p);
+  if(code != Error_code::SUCCESS)
+    return code;
+  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
+  if(bundle.status() != Error_code::SUCCESS)
+    return bundle.status();
+  code = internal::check_edge_length(p);
+  if(code != Error_code::SUCCESS)
+    return code;
+  Frame_field_comb<std::decay_t<decltype(bundle)> > comb;
+  code = comb.compute(bundle, coefficient_map, min_angle);
+  result.comb = comb.report();
+  if(code != Error_code::SUCCESS)
+    return code;
+  const double time_comb = internal::seconds_since(start);
+  code = compute_integer_grid_map(comb, uv_map, result, np);
+  result.time_comb = time_comb;
+  result.time_total = internal::seconds_since(start);
+  return code;
+}
+
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_COMPUTE_INTEGER_GRID_MAP_H

@@ -1,0 +1,412 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+//
+// The seamless map of a combed frame field (see compute_integer_grid_map()):
+// the guidance system (gradient operator and target Jacobians), the rounds of
+// mixed-integer solves with stiffening, the snapping of the output to a dyadic
+// grid, and the exact seam transitions of the result.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_MAP_SOLVE_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_MAP_SOLVE_H
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/comb_and_cut.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/mixed_integer_solve.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/seamless_reduction.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// The named parameters of the map (besides minimum_frame_angle and the solver).
+struct Seamless_map_parameters
+{
+  double stiffening = 1;
+  std::size_t max_rounds = 20;
+  bool refactor = false;
+  bool edge_length_given = false;
+  double edge_length = 0;
+};
+
+template <typename NamedParameters>
+Error_code read_seamless_map_parameters(const NamedParameters& np, Seamless_map_parameters& p)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  p.stiffening = choose_parameter(get_parameter(np, internal_np::stiffening_factor), 1.0);
+  p.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(20));
+  p.refactor = choose_parameter(get_parameter(np, internal_np::rounding_by_refactorization), false);
+  if(!std::isfinite(p.stiffening))
+    return Error_code::NON_FINITE_VALUE;
+  if(!(p.stiffening > 0))
+    return Error_code::INVALID_PARAMETER;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::target_edge_length_t>::value)
+  {
+    p.edge_length_given = true;
+    p.edge_length = get_parameter(np, internal_np::target_edge_length);
+  }
+  return Error_code::SUCCESS;
+}
+
+// The target edge length, checked: the given one, or the mean edge length.
+inline Error_code check_edge_length(const Seamless_map_parameters& p)
+{
+  if(!p.edge_length_given)
+    return Error_code::SUCCESS;
+  if(!std::isfinite(p.edge_length))
+    return Error_code::NON_FINITE_VALUE;
+  if(!(p.edge_length > 0))
+    return Error_code::INVALID_PARAMETER;
+  return Error_code::SUCCESS;
+}
+
+template <typename CornerMesh>
+double mean_edge_length(const CornerMesh& M)
+{
+  double edge_sum = 0;
+  std::size_t edge_count = 0;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    if(M.opposite[c] == npos || c < M.opposite[c])
+    {
+      const auto dvec = difference(M.point[M.target[c]], M.point[M.source(c)]);
+      edge_sum += std::sqrt(dot(dvec, dvec));
+      ++edge_count;
+    }
+  return edge_sum / double(edge_count);
+}
+
+// The least-squares guidance: rows sqrt(A_f) (grad uv - J*_f), 4 per face, over
+// the reduced unknowns (B1 y - d1), with what the measures of a map need.
+struct Guidance_system
+{
+  Eigen::SparseMatrix<double> B1;
+  Eigen::VectorXd d1;
+  std::vector<double> area;                                 // per face
+  std::vector<std::array<double, 4> > target;               // per face: J*_f by rows
+  std::vector<std::array<std::complex<double>, 3> > gradient;  // per face: grad of the hat function of each corner
+};
+
+template <typename CornerMesh>
+void assemble_guidance(const CornerMesh& M, const Comb_data& D, const Seamless_reduction& R, double h, std::size_t columns,
+                       Guidance_system& S)
+{
+  const std::size_t F = M.F;
+  std::vector<Eigen::Triplet<double> > triplets;
+  S.d1.resize(Eigen::Index(4 * F));
+  S.area.assign(F, 0);
+  S.target.resize(F);
+  S.gradient.resize(F);
+  auto add_corner = [&](std::size_t row_x, std::size_t row_y, std::size_t c, Complex grad, double s) {
+    // U_c contributes grad.x to row_x+0 (dU/dx) and grad.y to row_x+1; V_c to row_y, row_y+1
+    for(const auto& term : R.corner_terms[c])
+    {
+      // U = Re(coef * z), V = Im(coef * z), z = (column, column + 1)
+      const double p = term.re, q = term.im;
+      const Eigen::Index col = Eigen::Index(term.column);
+      triplets.emplace_back(Eigen::Index(row_x), col, s * p * grad.real());
+      triplets.emplace_back(Eigen::Index(row_x + 1), col, s * p * grad.imag());
+      triplets.emplace_back(Eigen::Index(row_x), col + 1, -s * q * grad.real());
+      triplets.emplace_back(Eigen::Index(row_x + 1), col + 1, -s * q * grad.imag());
+      triplets.emplace_back(Eigen::Index(row_y), col, s * q * grad.real());
+      triplets.emplace_back(Eigen::Index(row_y + 1), col, s * q * grad.imag());
+      triplets.emplace_back(Eigen::Index(row_y), col + 1, s * p * grad.real());
+      triplets.emplace_back(Eigen::Index(row_y + 1), col + 1, s * p * grad.imag());
+    }
+  };
+  for(std::size_t f = 0; f < F; ++f)
+  {
+    Complex q[3];
+    for(int k = 0; k < 3; ++k)
+      q[k] = M.local_point(3 * f + std::size_t(k));
+    const double A2 = std::imag(std::conj(q[1] - q[0]) * (q[2] - q[0]));  // twice the area
+    S.area[f] = A2 / 2;
+    const double s = std::sqrt(S.area[f]);
+    for(int k = 0; k < 3; ++k)
+      S.gradient[f][k] = Complex(0, 1) * (q[(k + 2) % 3] - q[(k + 1) % 3]) / A2;
+    const Complex u = D.roots[f][D.offset[f]], v = D.roots[f][(D.offset[f] + 1) % 4];
+    const double det = u.real() * v.imag() - u.imag() * v.real();
+    // J* = h^-1 [u v]^-1: rows grad U* = (v_y, -v_x)/det/h, grad V* = (-u_y, u_x)/det/h
+    S.target[f] = { v.imag() / det / h, -v.real() / det / h, -u.imag() / det / h, u.real() / det / h };
+    for(int k = 0; k < 4; ++k)
+      S.d1[Eigen::Index(4 * f + std::size_t(k))] = s * S.target[f][std::size_t(k)];
+    for(int k = 0; k < 3; ++k)
+      add_corner(4 * f, 4 * f + 2, 3 * f + std::size_t(k), S.gradient[f][k], s);
+  }
+  S.B1.resize(Eigen::Index(4 * F), Eigen::Index(columns));
+  S.B1.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+// uv of every corner for a vector of unknowns
+inline void corner_uv(const Seamless_reduction& R, const Eigen::VectorXd& y, std::vector<Complex>& uv)
+{
+  const std::size_t C = R.corner_terms.size();
+  uv.assign(C, Complex(0));
+  for(std::size_t c = 0; c < C; ++c)
+    for(const auto& term : R.corner_terms[c])
+    {
+      const Complex z(y[Eigen::Index(term.column)], y[Eigen::Index(term.column + 1)]);
+      uv[c] += Complex(term.re, term.im) * z;
+    }
+}
+
+inline void map_jacobian(const Guidance_system& S, std::size_t f, const std::vector<Complex>& uv, double J[4])
+{
+  J[0] = J[1] = J[2] = J[3] = 0;
+  for(int k = 0; k < 3; ++k)
+  {
+    const Complex z = uv[3 * f + std::size_t(k)], g = S.gradient[f][k];
+    J[0] += z.real() * g.real();
+    J[1] += z.real() * g.imag();
+    J[2] += z.imag() * g.real();
+    J[3] += z.imag() * g.imag();
+  }
+}
+
+// sum A_f |grad uv - J*_f|^2, unit weights
+inline double guidance_energy(const Guidance_system& S, const std::vector<Complex>& uv)
+{
+  double E = 0;
+  for(std::size_t f = 0; f < S.area.size(); ++f)
+  {
+    double J[4];
+    map_jacobian(S, f, uv, J);
+    double e = 0;
+    for(int k = 0; k < 4; ++k)
+      e += (J[k] - S.target[f][std::size_t(k)]) * (J[k] - S.target[f][std::size_t(k)]);
+    E += S.area[f] * e;
+  }
+  return E;
+}
+
+// faces with det(grad uv) <= 0
+inline std::size_t flipped_faces(const Guidance_system& S, const std::vector<Complex>& uv, std::vector<char>& flag)
+{
+  const std::size_t F = S.area.size();
+  flag.assign(F, 0);
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < F; ++f)
+  {
+    double J[4];
+    map_jacobian(S, f, uv, J);
+    if(!(J[0] * J[3] - J[1] * J[2] > 0))
+    {
+      flag[f] = 1;
+      ++count;
+    }
+  }
+  return count;
+}
+
+// Stiffening: the faces around a flip get heavier, by their relative distortion.
+template <typename CornerMesh>
+void stiffen(const CornerMesh& M, const Guidance_system& S, const std::vector<std::vector<std::size_t> >& vertex_faces,
+             const std::vector<Complex>& uv, const std::vector<char>& flag, double stiffening, std::vector<double>& weight)
+{
+  const std::size_t F = M.F;
+  std::vector<char> near(F, 0);
+  for(std::size_t f = 0; f < F; ++f)
+    if(flag[f])
+      for(int k = 0; k < 3; ++k)
+        for(std::size_t g : vertex_faces[M.target[3 * f + std::size_t(k)]])
+          near[g] = 1;
+  for(std::size_t f = 0; f < F; ++f)
+    if(near[f])
+    {
+      double J[4];
+      map_jacobian(S, f, uv, J);
+      double e = 0, n2 = 0;
+      for(int k = 0; k < 4; ++k)
+      {
+        e += (J[k] - S.target[f][std::size_t(k)]) * (J[k] - S.target[f][std::size_t(k)]);
+        n2 += S.target[f][std::size_t(k)] * S.target[f][std::size_t(k)];
+      }
+      double distortion = std::sqrt(e / n2);
+      if(flag[f])
+        distortion = (std::max)(distortion, 1.0);
+      weight[f] *= 1 + stiffening * distortion;
+    }
+}
+
+// Rounds of solves: the first one, then stiffening while faces flip. best_y is
+// the rounded solution of the round with the fewest flips (then the lowest energy).
+template <typename CornerMesh, typename Solver, typename Report>
+Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, std::size_t nx, std::size_t m,
+                                 const Seamless_map_parameters& p, const Solver& solver_prototype,
+                                 const Seamless_reduction& R, Eigen::VectorXd& best_y, Report& result)
+{
+  const std::size_t F = M.F, C = 3 * F;
+  std::vector<double> weight(F, 1.0), row_weight(4 * F, 1.0);
+  Eigen::VectorXd y_cont, y_round;
+  std::vector<Complex> uv;
+  std::vector<char> flag;
+  std::size_t best_flips = std::numeric_limits<std::size_t>::max();
+  double best_energy = 0;
+  std::vector<std::vector<std::size_t> > vertex_faces(M.V);
+  for(std::size_t c = 0; c < C; ++c)
+    vertex_faces[M.target[c]].push_back(CornerMesh::face(c));
+  for(std::size_t round = 0; round <= p.max_rounds; ++round)
+  {
+    const auto round_start = std::chrono::steady_clock::now();
+    for(std::size_t f = 0; f < F; ++f)
+      for(int k = 0; k < 4; ++k)
+        row_weight[4 * f + std::size_t(k)] = std::sqrt(weight[f]);
+    const Error_code code = solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, solver_prototype, p.refactor && round == 0,
+                                                y_cont, y_round, result);
+    if(code != Error_code::SUCCESS)
+      return code;
+    if(round == 0)
+    {
+      corner_uv(R, y_cont, uv);
+      result.continuous_energy = guidance_energy(S, uv);
+    }
+    corner_uv(R, y_round, uv);
+    const std::size_t flips = flipped_faces(S, uv, flag);
+    const double E = guidance_energy(S, uv);
+    result.flipped_per_round.push_back(flips);
+    if(flips < best_flips || (flips == best_flips && E < best_energy))
+    {
+      best_flips = flips;
+      best_energy = E;
+      best_y = y_round;
+    }
+    if(round > 0)
+    {
+      ++result.stiffening_rounds;
+      result.time_stiffening += seconds_since(round_start);
+    }
+    if(flips == 0 || round == p.max_rounds)
+      break;
+    stiffen(M, S, vertex_faces, uv, flag, p.stiffening, weight);
+  }
+  return Error_code::SUCCESS;
+}
+
+// Snaps the unknowns to a dyadic grid (continuous) and to integers (integer
+// unknowns), so that seams and singularities are exact in floating point.
+inline void snap_unknowns(Eigen::VectorXd& y, std::size_t nx, std::size_t m, const std::vector<Complex>& uv)
+{
+  double largest = 1;
+  for(const Complex& z : uv)
+    largest = (std::max)({ largest, std::abs(z.real()), std::abs(z.imag()) });
+  // values are multiples of 2^-k with |value| < 2^(50-k): exact sums with integers
+  const int e = int(std::ceil(std::log2(4 * largest + 4)));
+  const double quantum = std::ldexp(1.0, (std::min)(-1, e - 50));
+  for(std::size_t i = 0; i < nx; ++i)
+    y[Eigen::Index(i)] = std::round(y[Eigen::Index(i)] / quantum) * quantum;
+  for(std::size_t i = nx; i < nx + m; ++i)
+    y[Eigen::Index(i)] = std::round(y[Eigen::Index(i)]);
+}
+
+// The exact transition of every interior corner c (from face(c) to
+// face(opposite(c))): uv_B = i^r uv_A + t, r the combed rotation on the cut
+// (0 elsewhere), and t obtained from the reduced unknowns over Z[i]: the value
+// at target(c) on side B minus i^r times the one on side A, whose continuous
+// unknowns cancel, leaves integer unknowns with Gaussian-integer coefficients.
+// Writes Transition{r, {tx, ty}} per corner (the identity on the border);
+// returns the number of inconsistencies (a continuous unknown that does not
+// cancel, or two endpoints of one edge with different translations).
+template <typename CornerMesh, typename Transition>
+std::size_t exact_seam_transitions(const CornerMesh& M, const Comb_data& D, const Seamless_reduction& R,
+                                   std::size_t nx, const Eigen::VectorXd& y, std::vector<Transition>& out)
+{
+  const std::size_t C = 3 * M.F;
+  std::size_t inconsistencies = 0;
+  out.assign(C, Transition());
+  std::vector<std::pair<std::size_t, Gint> > form;
+  auto translation = [&](std::size_t a, std::size_t b, Gint rot) {
+    // uv[b] - rot * uv[a], as a Z[i]-form over the columns, then evaluated
+    form.clear();
+    auto add = [&](std::size_t column, Gint coefficient) {
+      for(auto& x : form)
+        if(x.first == column)
+        {
+          x.second = x.second + coefficient;
+          return;
+        }
+      form.emplace_back(column, coefficient);
+    };
+    for(const auto& term : R.corner_terms[b])
+      add(term.column, Gint(std::llround(term.re), std::llround(term.im)));
+    for(const auto& term : R.corner_terms[a])
+      add(term.column, -(rot * Gint(std::llround(term.re), std::llround(term.im))));
+    Gint t;
+    for(const auto& x : form)
+    {
+      if(x.second.is_zero())
+        continue;
+      if(x.first < nx)
+      {
+        ++inconsistencies;
+        continue;
+      }
+      t = t + x.second * Gint(std::llround(y[Eigen::Index(x.first)]), std::llround(y[Eigen::Index(x.first + 1)]));
+    }
+    return t;
+  };
+  for(std::size_t c = 0; c < C; ++c)
+  {
+    const std::size_t o = M.opposite[c];
+    if(o == npos)
+      continue;
+    const int r = D.seam[c] ? D.rotation[c] : 0;
+    const Gint rot = i_power(r);
+    // target(c) is target(prev(o)); source(c) = target(prev(c)) is target(o)
+    const Gint t1 = translation(c, CornerMesh::prev(o), rot), t2 = translation(CornerMesh::prev(c), o, rot);
+    if(!(t1 == t2))
+      ++inconsistencies;
+    out[c] = Transition{ r, { t1.re, t1.im } };
+  }
+  return inconsistencies;
+}
+
+// Snaps the solution y, measures it (flips, energy, residuals), computes the
+// exact seam transitions and writes the uv of every corner. `result` is an
+// Integer_grid_map_result.
+template <typename CornerMesh, typename UVMap, typename Report>
+void write_snapped_map(const CornerMesh& M, const Comb_data& D, const Seamless_reduction& R, const Guidance_system& S,
+                       std::size_t nx, std::size_t m, Eigen::VectorXd& y, UVMap uv_map, Report& result)
+{
+  std::vector<std::complex<double> > uv;
+  std::vector<char> flag;
+  corner_uv(R, y, uv);
+  result.max_seam_residual_before_snapping = seam_residual(M, D, uv);
+  snap_unknowns(y, nx, m, uv);
+  corner_uv(R, y, uv);
+  result.flipped_faces = flipped_faces(S, uv, flag);
+  result.rounded_energy = guidance_energy(S, uv);
+  result.energy_ratio = result.continuous_energy > 0 ? result.rounded_energy / result.continuous_energy : 1.0;
+  result.max_seam_residual = seam_residual(M, D, uv);
+  result.max_singularity_residual = singularity_residual(M, D, uv);
+  result.inconsistencies += exact_seam_transitions(M, D, R, nx, y, result.seam_transitions);
+  typedef typename boost::property_traits<UVMap>::value_type UV;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    put(uv_map, M.halfedge[c], UV{ uv[c].real(), uv[c].imag() });
+}
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_MAP_SOLVE_H

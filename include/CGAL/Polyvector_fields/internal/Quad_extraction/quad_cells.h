@@ -1,0 +1,284 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+//
+// The cells of the traced iso-lines (faces of the quad mesh), and the output
+// mesh: vertices split where their kept faces form several fans, positions
+// from barycentric coordinates computed in exact rationals, rounded once.
+// Written from Ebke, Bommes, Campen, Kobbelt 2013 (QEx), not from its code.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_QUAD_CELLS_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_QUAD_CELLS_H
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/Extractor.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+namespace qex {
+
+// Empties the output mesh. A Surface_mesh keeps its property maps (the caller's
+// vertex point map of np_out may be one of them); other meshes use CGAL::clear().
+template <typename G, typename = void>
+struct Has_clear_keeping_maps : std::false_type {};
+template <typename G>
+struct Has_clear_keeping_maps<G, std::void_t<decltype(std::declval<G&>().clear_without_removing_property_maps())> >
+  : std::true_type {};
+template <typename PolygonMesh>
+void clear_output(PolygonMesh& pm)
+{
+  if constexpr(Has_clear_keeping_maps<PolygonMesh>::value)
+    pm.clear_without_removing_property_maps();
+  else
+    CGAL::clear(pm);
+}
+
+// The closed cycles of slots: next(s) = the slot before partner(s) in the
+// counterclockwise order at its point.
+struct Cells
+{
+  std::vector<std::vector<std::size_t> > cells;  // slots of each kept face
+  std::vector<char> has_boundary_piece;          // per cell
+  std::vector<std::size_t> position;             // per slot: its position at its point
+};
+
+template <typename Report>
+void collect_cells(const Extractor& X, bool trimmed, Cells& C, Report& result)
+{
+  std::vector<std::size_t>& position = C.position;
+  position.assign(X.slots.size(), npos);
+  for(const Qpoint& P : X.points)
+    for(std::size_t i = 0; i < P.slots.size(); ++i)
+      position[P.slots[i]] = i;
+  std::vector<char> visited(X.slots.size(), 0);
+  for(std::size_t s0 = 0; s0 < X.slots.size(); ++s0)
+  {
+    if(visited[s0] || X.slots[s0].state != 1)
+      continue;
+    std::vector<std::size_t> cycle;
+    std::size_t s = s0;
+    bool ok = true, boundary_piece = false;
+    while(true)
+    {
+      visited[s] = 1;
+      cycle.push_back(s);
+      boundary_piece = boundary_piece || X.slots[s].dir < 0;
+      const std::size_t b = X.slots[s].partner;
+      const Qpoint& P = X.points[X.slots[b].point];
+      const std::size_t n = P.slots.size(), i = position[b], ip = (i + n - 1) % n;
+      if(!P.adjacent_next[ip])
+      {
+        ok = false;
+        break;
+      }
+      s = P.slots[ip];
+      if(X.slots[s].state != 1)
+      {
+        ok = false;
+        break;
+      }
+      if(s == s0)
+        break;
+      if(visited[s])
+      {
+        ok = false;  // joins a chain already found open
+        break;
+      }
+    }
+    if(!ok)
+    {
+      ++result.discarded_cells;
+      continue;
+    }
+    if(!trimmed && cycle.size() != 4)
+    {
+      ++result.non_quad_cells;
+      continue;
+    }
+    C.cells.push_back(cycle);
+    C.has_boundary_piece.push_back(boundary_piece);
+  }
+}
+
+// Builds the quad mesh (cleared first) from the cells. `result` is a Quad_extraction_result.
+template <typename PolygonMesh, typename NamedParametersOut, typename Report>
+Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, PolygonMesh& quad_mesh,
+                           const NamedParametersOut& np_out, Report& result)
+{
+  // sector i at point P: between slots[i] (outgoing of a face corner) and slots[i+1]
+  std::vector<std::vector<std::size_t> > sector_face(X.points.size());
+  for(std::size_t p = 0; p < X.points.size(); ++p)
+    sector_face[p].assign(X.points[p].slots.size(), npos);
+  for(std::size_t f = 0; f < C.cells.size(); ++f)
+    for(std::size_t s : C.cells[f])
+    {
+      // the face corner at point(s) lies between s and the slot after it (the one whose partner precedes s)
+      const Qpoint& P = X.points[X.slots[s].point];
+      (void)P;
+      sector_face[X.slots[s].point][C.position[s]] = f;
+    }
+  // corner (f, s) -> output vertex
+  std::vector<std::size_t> corner_vertex_of_slot(X.slots.size(), npos);
+  std::vector<std::size_t> out_point;  // output vertex -> point
+  for(std::size_t p = 0; p < X.points.size(); ++p)
+  {
+    const std::size_t n = X.points[p].slots.size();
+    const auto& sf = sector_face[p];
+    // a fan: a maximal run of sectors with faces, joined through interior slots
+    std::size_t start_i = npos;
+    bool any = false;
+    for(std::size_t i = 0; i < n; ++i)
+      if(sf[i] != npos)
+        any = true;
+    if(!any)
+      continue;
+    // start after an empty sector (or anywhere if all are full)
+    for(std::size_t i = 0; i < n; ++i)
+      if(sf[(i + n - 1) % n] == npos)
+      {
+        start_i = i;
+        break;
+      }
+    bool full = start_i == npos;
+    if(full)
+      start_i = 0;
+    std::size_t fans = 0, current = npos;
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t i = (start_i + k) % n;
+      if(sf[i] == npos)
+      {
+        current = npos;
+        continue;
+      }
+      if(current == npos)
+      {
+        current = out_point.size();
+        out_point.push_back(p);
+        ++fans;
+      }
+      corner_vertex_of_slot[X.points[p].slots[i]] = current;
+    }
+    if(fans > 1)
+      result.split_vertices += fans - 1;
+  }
+  // positions
+  typedef typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type Default_out_vpm;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::vertex_point_t, NamedParametersOut,
+                                                             Default_out_vpm>::type Out_vpm;
+  typedef typename boost::property_traits<Out_vpm>::value_type Out_point;
+  typedef CGAL::Exact_rational Q;
+  auto lerp3 = [&](const std::array<double, 3>* P, const double* w, std::size_t n) {
+    double x[3] = { 0, 0, 0 };
+    for(std::size_t i = 0; i < n; ++i)
+      for(int a = 0; a < 3; ++a)
+        x[a] += w[i] * P[i][a];
+    return Out_point(x[0], x[1], x[2]);
+  };
+  std::vector<Out_point> positions;
+  positions.reserve(out_point.size());
+  for(std::size_t p : out_point)
+  {
+    const Qpoint& P = X.points[p];
+    if(P.loc == AT_VERTEX)
+    {
+      const auto& x = M.point[P.elem];
+      positions.push_back(Out_point(x[0], x[1], x[2]));
+    }
+    else if(P.loc == ON_EDGE || P.loc == BOUNDARY_HIT)
+    {
+      // parameter along the edge from its lower-index vertex, exact then rounded once
+      const std::size_t e = P.elem;
+      std::size_t a = e, b = Chart_mesh::next(e);
+      Q lam;
+      if(P.loc == BOUNDARY_HIT)
+        lam = P.lambda;
+      else
+      {
+        const P2 &A = M.uv[a], &B = M.uv[b];
+        const int coord = A[0] != B[0] ? 0 : 1;
+        lam = (Q(P.uv[coord]) - Q(A[coord])) / (Q(B[coord]) - Q(A[coord]));
+      }
+      if(M.vertex[b] < M.vertex[a])
+      {
+        std::swap(a, b);
+        lam = Q(1) - lam;
+      }
+      const double l = CGAL::to_double(lam);
+      const std::array<double, 3> PP[2] = { M.point[M.vertex[a]], M.point[M.vertex[b]] };
+      const double w[2] = { 1 - l, l };
+      positions.push_back(lerp3(PP, w, 2));
+    }
+    else
+    {
+      const std::size_t f = P.elem;
+      Q U[3][2];
+      for(std::size_t k = 0; k < 3; ++k)
+        for(int c = 0; c < 2; ++c)
+          U[k][c] = Q(M.corner_uv(f, k)[c]);
+      const Q qx(P.uv[0]), qy(P.uv[1]);
+      auto det = [](const Q& ax, const Q& ay, const Q& bx, const Q& by, const Q& cx, const Q& cy) -> Q {
+        return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+      };
+      const Q area = det(U[0][0], U[0][1], U[1][0], U[1][1], U[2][0], U[2][1]);
+      double w[3];
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const std::size_t k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        w[k] = CGAL::to_double(det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area);
+      }
+      const std::array<double, 3> PP[3] = { M.point[M.vertex[3 * f]], M.point[M.vertex[3 * f + 1]], M.point[M.vertex[3 * f + 2]] };
+      positions.push_back(lerp3(PP, w, 3));
+    }
+  }
+  std::vector<std::vector<std::size_t> > polygons;
+  for(std::size_t f = 0; f < C.cells.size(); ++f)
+  {
+    std::vector<std::size_t> poly;
+    for(std::size_t s : C.cells[f])
+      poly.push_back(corner_vertex_of_slot[s]);
+    polygons.push_back(poly);
+    if(poly.size() == 4 && !C.has_boundary_piece[f])
+      ++result.quads;
+    else
+      ++result.trimmed_polygons;
+  }
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    ++result.inconsistencies;
+    result.diagnostic = "the cells do not form a polygon mesh";
+    return Error_code::NOT_AN_INTEGER_GRID_MAP;
+  }
+  clear_output(quad_mesh);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(positions, polygons, quad_mesh, CGAL::parameters::default_values(), np_out);
+  result.vertices = num_vertices(quad_mesh);
+  result.faces = num_faces(quad_mesh);
+  for(auto v : vertices(quad_mesh))
+    if(!CGAL::is_border(v, quad_mesh) && degree(v, quad_mesh) != 4)
+      ++result.irregular_vertices;
+  return Error_code::SUCCESS;
+}
+
+} // namespace qex
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_QUAD_CELLS_H

@@ -23,4 +23,4 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target design_polyvector_field -j2
 
 cd "$caller_dir"
-exec "$root/build/examples/Polyvector_fields/design_polyvector_field" "$@"
+exec "$root/build/tools/design_polyvector_field/design_polyvector_field" "$@"

@@ -492,7 +492,7 @@ def main():
     with open(os.path.join(resdir, "memory.json"), "w") as f:
         json.dump(memory, f, indent=1)
 
-    cli = os.path.join(args.build_dir, "examples", "Polyvector_fields", "design_polyvector_field")
+    cli = os.path.join(args.build_dir, "tools", "design_polyvector_field", "design_polyvector_field")
     torus = run_cli_torus(cli, resdir)
     with open(os.path.join(resdir, "torus.json"), "w") as f:
         json.dump(torus, f, indent=1)

@@ -9,11 +9,21 @@
 # silently shows nothing when a \skip or \until pattern is not found in an
 # example. For each `\dontinclude FILE`, the following `\skip P` and `\until P`
 # patterns must occur in FILE in that order; each `\cgalExample{FILE}` must exist.
-#   cmake -DMANUAL=doc/Polyvector_fields/Polyvector_fields.txt -DEXAMPLES=examples -P check_snippets.cmake
+# FILE is looked for in EXAMPLES, then in TOOLS if given (Doxygen's EXAMPLE_PATH).
+#   cmake -DMANUAL=doc/Polyvector_fields/Polyvector_fields.txt -DEXAMPLES=examples [-DTOOLS=tools] -P check_snippets.cmake
 
 if(NOT MANUAL OR NOT EXAMPLES)
   message(FATAL_ERROR "usage: cmake -DMANUAL=<manual.txt> -DEXAMPLES=<examples folder> -P check_snippets.cmake")
 endif()
+
+# The path of a quoted file: in EXAMPLES, else in TOOLS, else in EXAMPLES (missing).
+function(pvf_quoted_file name result)
+  set(path "${EXAMPLES}/${name}")
+  if(NOT EXISTS "${path}" AND TOOLS AND EXISTS "${TOOLS}/${name}")
+    set(path "${TOOLS}/${name}")
+  endif()
+  set(${result} "${path}" PARENT_SCOPE)
+endfunction()
 
 # The manual is walked line by line with string(FIND): lines hold ';' and '[',
 # which CMake lists would split or group.
@@ -36,15 +46,17 @@ while(NOT manual STREQUAL "")
   string(FIND "${line}" "\\cgalExample{" example_at)
   if(NOT example_at EQUAL -1)
     string(REGEX REPLACE ".*\\\\cgalExample\\{([^}]+)\\}.*" "\\1" example "${line}")
-    if(NOT EXISTS "${EXAMPLES}/${example}")
+    pvf_quoted_file("${example}" example_path)
+    if(NOT EXISTS "${example_path}")
       message(SEND_ERROR "${MANUAL}: \\cgalExample{${example}}: no such file in ${EXAMPLES}")
       math(EXPR failures "${failures} + 1")
     endif()
   elseif(line MATCHES "^\\\\dontinclude[ \t]")
     string(REGEX REPLACE "^\\\\dontinclude[ \t]+" "" current "${line}")
     string(STRIP "${current}" current)
-    if(EXISTS "${EXAMPLES}/${current}")
-      file(READ "${EXAMPLES}/${current}" rest)
+    pvf_quoted_file("${current}" current_path)
+    if(EXISTS "${current_path}")
+      file(READ "${current_path}" rest)
     else()
       message(SEND_ERROR "${MANUAL}: \\dontinclude ${current}: no such file in ${EXAMPLES}")
       math(EXPR failures "${failures} + 1")

@@ -59,7 +59,7 @@ def designer(build_dir):
         subprocess.run(["cmake", "-S", ROOT, "-B", build_dir], check=True)
     # A no-op when the program is up to date; otherwise the figures follow the current sources.
     subprocess.run(["cmake", "--build", build_dir, "--target", "design_polyvector_field"], check=True)
-    return os.path.join(build_dir, "examples", "Polyvector_fields", "design_polyvector_field")
+    return os.path.join(build_dir, "tools", "design_polyvector_field", "design_polyvector_field")
 
 
 def run(exe, workdir, name, args):

@@ -18,6 +18,7 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
 #include <CGAL/Polyvector_fields/face_frames.h>
+#include <CGAL/Polyvector_fields/select_sharp_edge_constraints.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
@@ -124,39 +125,14 @@ inline Mesh jittered_grid(int rows, int cols, unsigned seed)
 
 // Partial constraints along the sharp edges of `tm` (dihedral angle above
 // `degrees`): each face of such an edge gets the direction of its sharpest
-// one or two edges, as the command-line program's --sharp-edges does.
+// one or two edges (select_sharp_edge_constraints(), as the command-line
+// program's --sharp-edges for a sign-symmetric 4-field).
 inline std::vector<CGAL::Polyvector_fields::Face_constraint<Mesh::Face_index, Vector>> sharp_edge_constraints(const Mesh& tm, double degrees)
 {
-  typedef Mesh::Face_index Face;
-  std::map<Face, std::vector<std::pair<double, Vector> > > edges_of_face;
-  for(auto e : edges(tm))
-  {
-    const auto h = halfedge(e, tm);
-    if(CGAL::is_border_edge(h, tm))
-      continue;
-    const Face f = face(h, tm), g = face(opposite(h, tm), tm);
-    CGAL::Polyvector_fields::Face_frame a, b;
-    CGAL::Polyvector_fields::face_frame(f, tm, a);
-    CGAL::Polyvector_fields::face_frame(g, tm, b);
-    const double cosine = a.normal[0] * b.normal[0] + a.normal[1] * b.normal[1] + a.normal[2] * b.normal[2];
-    const double angle = std::acos((std::max)(-1.0, (std::min)(1.0, cosine)));
-    if(angle <= degrees * pi / 180)
-      continue;
-    Vector d = tm.point(target(h, tm)) - tm.point(source(h, tm));
-    d = d / std::sqrt(d.squared_length());
-    edges_of_face[f].emplace_back(angle, d);
-    edges_of_face[g].emplace_back(angle, d);
-  }
   std::vector<CGAL::Polyvector_fields::Face_constraint<Mesh::Face_index, Vector>> constraints;
-  for(auto& entry : edges_of_face)
-  {
-    auto& list = entry.second;
-    std::sort(list.begin(), list.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-    CGAL::Polyvector_fields::Face_constraint<Mesh::Face_index, Vector> c{ entry.first, {} };
-    for(std::size_t i = 0; i < list.size() && i < 2; ++i)
-      c.vectors.push_back(list[i].second);
-    constraints.push_back(c);
-  }
+  if(CGAL::Polyvector_fields::select_sharp_edge_constraints(tm, degrees, 2, constraints) !=
+     CGAL::Polyvector_fields::Error_code::SUCCESS)
+    throw std::runtime_error("select_sharp_edge_constraints failed");
   return constraints;
 }
 

@@ -1,0 +1,129 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_SHARP_EDGE_CONSTRAINTS_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_SHARP_EDGE_CONSTRAINTS_H
+
+// The work of select_sharp_edge_constraints(): CGAL's detect_sharp_edges()
+// finds the candidate edges; each face beside a sharp edge collects the
+// edge's dihedral angle and unit direction, and keeps the directions of its
+// sharpest edges.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Face_constraint.h>
+#include <CGAL/Polyvector_fields/face_frames.h>
+#include <CGAL/Polyvector_fields/internal/Face_numbering.h>
+
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// The angle between the normals of the two faces of an interior edge, in
+// radians, in [0, pi]; from the faces' frames (see face_frame()).
+inline double dihedral_normal_angle(const Face_frame& a, const Face_frame& b)
+{
+  const double cosine = a.normal[0] * b.normal[0] + a.normal[1] * b.normal[1] + a.normal[2] * b.normal[2];
+  return std::acos((std::max)(-1.0, (std::min)(1.0, cosine)));
+}
+
+// See select_sharp_edge_constraints(). `vpm` gives the points, `np` goes to
+// detect_sharp_edges() (vertex_point_map, geom_traits).
+template <typename TriangleMesh, typename VertexPointMap, typename FaceDescriptor, typename Vector_3,
+          typename NamedParameters>
+Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
+                                         double angle_in_degrees,
+                                         std::size_t maximum_vectors_per_face,
+                                         VertexPointMap vpm,
+                                         std::vector<Face_constraint<FaceDescriptor, Vector_3> >& out,
+                                         const NamedParameters& np)
+{
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+  typedef typename Graph_traits::edge_descriptor edge_descriptor;
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+
+  // The faces, numbered in the order of faces(tm), with their frames.
+  std::vector<face_descriptor> face_list;
+  Numbering<face_descriptor> face_index;
+  std::vector<Face_frame> frames;
+  for(face_descriptor f : faces(tm))
+  {
+    Face_frame frame;
+    const Error_code code = face_frame(f, tm, frame, CGAL::parameters::vertex_point_map(vpm));
+    if(code != Error_code::SUCCESS)
+      return code;
+    face_index.add(f);
+    face_list.push_back(f);
+    frames.push_back(frame);
+  }
+  if(face_list.empty())
+    return Error_code::EMPTY_MESH;
+
+  // CGAL's test is "at least the angle", and it marks border edges too; an
+  // edge here is sharp when the angle between the normals strictly exceeds
+  // the threshold, and an edge of two faces.
+  std::map<edge_descriptor, bool> sharp_flags;
+  boost::associative_property_map<std::map<edge_descriptor, bool> > is_sharp(sharp_flags);
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(tm, typename Geom_traits::FT(angle_in_degrees), is_sharp, np);
+  const double threshold = angle_in_degrees * CGAL_PI / 180.0;
+
+  // (dihedral angle, unit direction) of the sharp edges of each face, in the order of edges(tm).
+  std::vector<std::vector<std::pair<double, std::array<double, 3> > > > edges_of_face(face_list.size());
+  for(edge_descriptor e : edges(tm))
+  {
+    const auto h = halfedge(e, tm);
+    if(CGAL::is_border_edge(h, tm) || !get(is_sharp, e))
+      continue;
+    const std::size_t f = face_index(face(h, tm)), g = face_index(face(opposite(h, tm), tm));
+    const double angle = dihedral_normal_angle(frames[f], frames[g]);
+    if(angle <= threshold)
+      continue;
+    // The direction, scaled first so that its squared length cannot overflow.
+    std::array<double, 3> d = scaled_difference(to_array(get(vpm, target(h, tm))), to_array(get(vpm, source(h, tm))));
+    const double length = std::sqrt(dot(d, d));
+    d = { d[0] / length, d[1] / length, d[2] / length };
+    edges_of_face[f].emplace_back(angle, d);
+    edges_of_face[g].emplace_back(angle, d);
+  }
+
+  std::vector<Face_constraint<FaceDescriptor, Vector_3> > result;
+  for(std::size_t f = 0; f < face_list.size(); ++f)
+  {
+    auto& list = edges_of_face[f];
+    if(list.empty())
+      continue;
+    std::sort(list.begin(), list.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    Face_constraint<FaceDescriptor, Vector_3> c;
+    c.face = face_list[f];
+    for(std::size_t i = 0; i < list.size() && i < maximum_vectors_per_face; ++i)
+      c.vectors.push_back(Vector_3(list[i].second[0], list[i].second[1], list[i].second[2]));
+    result.push_back(c);
+  }
+  out.swap(result);
+  return Error_code::SUCCESS;
+}
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FIELD_DESIGN_SHARP_EDGE_CONSTRAINTS_H

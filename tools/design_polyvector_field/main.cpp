@@ -1,0 +1,84 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+// design_polyvector_field: the command-line designer.
+//
+// Reads a mesh and constraints, designs the smoothest N-PolyVector field, and
+// writes the field (.rawfield), its singularities (.sings) and a VTK file for
+// ParaView. Frame fields (N = 4, sign-symmetric) can then be optimised to
+// bound their angles or to be conjugate (paper Section 4), and guide a
+// seamless integer-grid map (--parametrize, written as an OBJ file with one
+// texture coordinate per corner). With no argument it
+// designs a frame field on the bundled architectural mesh from its 84 bundled
+// constraints and writes output/inspired_mesh.{rawfield,sings,vtk}. Run with
+// --help for the options.
+//
+// A polygon mesh or a polygon soup is repaired into a triangle mesh first (see
+// IO::read_triangle_mesh()), and the summary says what changed; --no-repair
+// refuses such a mesh instead. Errors are reported on one line of standard
+// error with a non-zero exit status: 2 for a bad command line, 1 otherwise.
+// Outputs are written all or none: every destination is checked before the
+// work starts, and the files are published only once every stage succeeded.
+//
+// The program is one translation unit made of these files: options.h (the
+// options, --help and the command line), output_files.h (the outputs,
+// written all or none), stages.h (the stages of a run), summary.h (what the
+// run reports), and this file, which calls them in order.
+
+#include "common.h"
+#include "options.h"
+#include "output_files.h"
+#include "stages.h"
+#include "summary.h"
+
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+
+namespace pvf_cli {
+
+int run(const Options& o)
+{
+  Stopwatch clock;
+  Output_files outputs(o);
+  Input_mesh input = load_mesh(o);
+  clock.lap("load mesh");
+  // The frames, numbering and connection of the mesh, built once for every stage.
+  const Bundle bundle(input.tm);
+  check(bundle.status(), "mesh '" + o.mesh + "'");
+  clock.lap("frames and connection");
+  Curvature curvature;
+  const Constraint_set constraints = gather_constraints(o, input, bundle, curvature, clock);
+  const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
+  const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
+  const Parametrization param = parametrize(o, input.tm, bundle, field, clock);
+  Quad_stage quads;
+  make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+  write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
+  print_summary(o, input, constraints, field, analysis, param, quads, outputs, clock);
+  return EXIT_SUCCESS;
+}
+
+} // namespace pvf_cli
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return pvf_cli::run(pvf_cli::parse_options(argc, argv));
+  }
+  catch(const pvf_cli::Failure& failure)
+  {
+    std::cerr << "design_polyvector_field: " << failure.what() << std::endl;
+    return failure.status;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "design_polyvector_field: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+}

@@ -1,0 +1,190 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+// design_polyvector_field: the summary of a run on standard output (stage 10).
+
+#ifndef PVF_TOOLS_DESIGN_POLYVECTOR_FIELD_SUMMARY_H
+#define PVF_TOOLS_DESIGN_POLYVECTOR_FIELD_SUMMARY_H
+
+#include "common.h"
+#include "options.h"
+#include "output_files.h"
+#include "stages.h"
+
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+
+namespace pvf_cli {
+
+// ---------------------------------------------------------------------------
+// Stage 10: the summary.
+// ---------------------------------------------------------------------------
+// Which solver solved the systems, and what multigrid did when it was used.
+std::string solver_report(const PVF::Default_sparse_solver& solver)
+{
+#ifdef CGAL_PVF_HAS_CHOLMOD
+  const char* direct = "direct (CHOLMOD)";
+#else
+  const char* direct = "direct (Eigen SimplicialLDLT)";
+#endif
+  const PVF::Amg_statistics s = solver.amg_solver().statistics();
+  std::ostringstream m;
+  if(s.solves == 0)
+  {
+    m << direct;
+    if(solver.amg_threshold() != std::numeric_limits<std::size_t>::max())
+      m << " (systems of fewer than " << solver.amg_threshold() << " unknowns)";
+    return m.str();
+  }
+  m << "multigrid-preconditioned conjugate gradient: " << s.level_sizes.size() << " levels (";
+  for(std::size_t l = 0; l < s.level_sizes.size(); ++l)
+    m << (l ? ", " : "") << s.level_sizes[l];
+  m << " unknowns), " << s.solves << " solves, " << s.iterations << " iterations (at most " << s.max_iterations
+    << "), residual at most " << s.max_residual << ", " << s.setups << " setups";
+  if(s.reused_setups)
+    m << " and " << s.reused_setups << " refactorizations on kept coarse levels";
+  m << " (time summed over the systems: structure " << std::fixed << std::setprecision(3) << s.analysis_seconds
+    << " s, setups " << s.setup_seconds << " s, solves " << s.solve_seconds << " s)";
+  m.unsetf(std::ios::fixed);
+  if(s.fallbacks)
+    m << "; " << s.fallbacks << " solves did not converge and were finished by the direct solver";
+  return m.str();
+}
+
+void print_summary(const Options& o, const Input_mesh& input, const Constraint_set& constraints, const Field& field,
+                   const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
+                   const Stopwatch& clock)
+{
+  const Mesh& tm = input.tm;
+  const PVF::IO::Mesh_repair_report& r = input.report;
+  int sum = 0, positive = 0, negative = 0;
+  for(const auto& s : a.singularities)
+  {
+    sum += s.index_numerator;
+    (s.index_numerator > 0 ? positive : negative) += 1;
+  }
+  std::size_t border_edges = 0, used_vertices = 0;
+  for(auto e : edges(tm))
+    border_edges += CGAL::is_border(e, tm);
+  for(Vertex v : vertices(tm))
+    used_vertices += (halfedge(v, tm) == Mesh::null_halfedge()) ? 0 : 1;
+  // Isolated vertices (kept with --no-repair) are not part of the surface.
+  const int chi = int(used_vertices) - int(num_edges(tm)) + int(num_faces(tm));
+  std::cout << std::setprecision(6);
+  std::cout << "mesh            " << o.mesh << ": " << num_faces(tm) << " faces, " << used_vertices << " vertices, "
+            << field.components << " component(s), " << (border_edges ? "with boundary" : "closed")
+            << ", Euler characteristic " << chi << "\n";
+  if(r.changed(o.repair))
+  {
+    std::cout << "repair          " << r.file_faces << " faces in the file ->";
+    const std::pair<std::size_t, const char*> items[] = {
+      { r.triangulated_faces, "polygons triangulated" }, { r.merged_points, "duplicate points merged" },
+      { r.duplicate_faces, "duplicate faces removed" }, { r.degenerate_polygons, "faces with a repeated vertex fixed or removed" },
+      { r.degenerate_faces, "zero-area triangles repaired" }, { r.reoriented_faces, "faces reoriented" },
+      { r.split_vertices, "vertices split (non-manifold)" }, { r.isolated_vertices, "isolated vertices removed" } };
+    const char* separator = " ";
+    for(const auto& item : items)
+      if(item.first)
+      {
+        std::cout << separator << item.first << " " << item.second;
+        separator = ", ";
+      }
+    std::cout << "; the outputs refer to the repaired mesh" << (o.out_mesh.empty() ? " (write it with --out-mesh)" : "") << "\n";
+  }
+  else if(r.isolated_vertices)
+    std::cout << "note            " << r.isolated_vertices << " isolated vertices are ignored\n";
+  std::cout << "field           degree " << o.degree << (o.sign_symmetric ? ", sign-symmetric" : "") << ", "
+            << field.statistics.number_of_degrees_solved << " coefficient degree(s) solved\n";
+  std::cout << "constraints     " << constraints.list.size() << " faces (" << field.full << " full, " << field.partial
+            << " partial" << (constraints.sharp ? ", " + std::to_string(constraints.sharp) + " from sharp edges" : std::string())
+            << (constraints.from_curvature ? ", " + std::to_string(constraints.from_curvature) + " from curvature" : std::string())
+            << "), ";
+  if(o.soft_weight > 0)
+    std::cout << "soft, weight " << o.soft_weight << "\n";
+  else
+    std::cout << "hard\n";
+  if(!constraints.note.empty())
+    std::cout << "note            " << constraints.note << "\n";
+  std::cout << "solver          " << solver_report(field.solver) << "\n";
+  std::cout << "energy          " << a.energy << " (smoothness, Eq. 6"
+            << (o.weights == PVF::Smoothness_weights::HARMONIC ? ", harmonic weights)" : ")");
+  if(o.angle_bound_degrees > 0 || o.conjugate)
+    std::cout << "; smooth field before optimisation " << field.smooth_energy;
+  std::cout << "\n" << field.frame_report;
+  std::cout << "singularities   " << a.singularities.size() << " (" << positive << " positive, " << negative
+            << " negative), sum of indices " << sum << "/" << o.degree;
+  if(!border_edges)
+    std::cout << " (Poincare-Hopf: N * chi = " << int(o.degree) * chi << ")";
+  std::cout << "\n";
+  if(!a.undefined.empty())
+    std::cout << "undefined index " << a.undefined.size() << " vertices next to faces with a zero constant coefficient\n";
+  if(!a.note.empty())
+    std::cout << "note            " << a.note << "\n";
+  if(param.computed)
+  {
+    const PVF::Integer_grid_map_result& r = param.result;
+    std::cout << "parametrization edge length " << r.target_edge_length << " (mean edge " << r.mean_edge_length << "); "
+              << r.comb.singular_vertices << " singular vertices on integer points, " << r.comb.seam_curves << " seam curves ("
+              << r.comb.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
+              << " flipped faces";
+    if(r.stiffening_rounds > 0)
+      std::cout << " after " << r.stiffening_rounds << " stiffening rounds";
+    std::cout << "; worst seam residual " << r.max_seam_residual << "; energy rounded/continuous " << r.energy_ratio;
+    if(r.comb.clamped_faces > 0)
+      std::cout << "; " << r.comb.clamped_faces << " near-degenerate frames clamped";
+    const auto old_flags = std::cout.flags();
+    const auto old_precision = std::cout.precision();
+    std::cout << std::fixed << std::setprecision(3) << "\n                (time: comb and cut " << r.time_comb
+              << ", seam reduction " << r.time_reduction << ", assembly " << r.time_assembly << ", factorization "
+              << r.time_factorization << ", integer rounding " << r.time_schur + r.time_rounding << ", stiffening "
+              << r.time_stiffening << ")\n";
+    std::cout.flags(old_flags);
+    std::cout.precision(old_precision);
+  }
+  if(q.computed)
+  {
+    const PVF::Quad_extraction_result& e = q.extraction;
+    std::cout << "quad mesh       " << e.quads << " quads";
+    if(e.trimmed_polygons > 0)
+      std::cout << " and " << e.trimmed_polygons << " trimmed boundary polygons";
+    std::cout << ", " << e.vertices << " vertices, " << e.irregular_vertices << " irregular vertices (valence != 4)";
+    if(e.flipped_faces > 0)
+      std::cout << "; " << e.flipped_faces << " flipped faces of the map, " << e.repaired_regions << " regions repaired";
+    std::cout << "\nplanarity       max " << 100 * q.before.max << "%, mean " << 100 * q.before.mean << "%";
+    if(q.planarized)
+    {
+      const PVF::Planarization_result& r = q.planarization;
+      if(r.converged)
+        std::cout << " -> after " << r.iterations << " iterations max " << 100 * q.after.max << "%, mean "
+                  << 100 * q.after.mean << "% (threshold " << 100 * r.threshold << "%); largest distance to the surface "
+                  << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";
+      else
+        std::cout << "; the planarization did NOT reach " << 100 * r.threshold << "% in " << r.iterations
+                  << " iterations (it got to max " << 100 * r.max_planarity_after << "%, mean "
+                  << 100 * r.mean_planarity_after << "%): the quad mesh is written as extracted";
+    }
+    std::cout << "\n";
+  }
+  std::cout << "time (s)       ";
+  for(const char* stage : { "load mesh", "frames and connection", "constraints", "curvature", "design", "frame field",
+                            "roots", "singularities", "diagnostics", "parametrization", "quad mesh", "planarization",
+                            "write" })
+    if(clock.times.count(stage))
+      std::cout << " " << stage << " " << std::fixed << std::setprecision(3) << clock.times.at(stage) << ";";
+  std::cout << " (design: assembly " << field.statistics.assembly << ", factorization " << field.statistics.factorization
+            << ", solve " << field.statistics.solve << ")\n";
+  for(const std::string& out : outputs.destinations())
+    std::cout << "wrote           " << out << "\n";
+}
+
+} // namespace pvf_cli
+
+#endif // PVF_TOOLS_DESIGN_POLYVECTOR_FIELD_SUMMARY_H

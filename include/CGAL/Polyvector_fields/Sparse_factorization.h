@@ -17,6 +17,7 @@
 #include <Eigen/Sparse>
 
 #include <complex>
+#include <cstddef>
 #include <memory>
 
 namespace CGAL {
@@ -86,7 +87,7 @@ public:
   /// copies `A` into the model's `Matrix` and calls its `factor()`.
   bool factorize(const Matrix& A)
   {
-    m_matrix.reset(new typename SolverTraits::Matrix(A.rows(), A.cols()));
+    m_matrix.reset(new typename SolverTraits::Matrix(std::size_t(A.rows()), std::size_t(A.cols())));
     for(Eigen::Index k = 0; k < A.outerSize(); ++k)
       for(typename Matrix::InnerIterator it(A, k); it; ++it)
         m_matrix->add_coef(it.row(), it.col(), it.value());

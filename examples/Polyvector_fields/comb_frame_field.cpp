@@ -54,7 +54,7 @@ int main(int argc, char** argv)
   if(code == PVF::Error_code::SUCCESS)
     code = PVF::select_curvature_constraints(bundle, curvatures, constraints, PVF::parameters::constrained_fraction(0.01));
   if(code == PVF::Error_code::SUCCESS)
-    code = PVF::design_polyvector_field(bundle, 4, constraints, field, PVF::parameters::sign_symmetric(true));
+    code = PVF::design_polyvector_field(mesh, 4, constraints, field, PVF::parameters::sign_symmetric(true));
 
   // The comb: cut graph, rotations and combed frames, in the bundle's numbering.
   PVF::Frame_field_comb<PVF::Tangent_bundle<Mesh> > comb;
@@ -80,5 +80,5 @@ int main(int argc, char** argv)
                 << ends.second << " (index " << b << "/4) over " << comb.seam_curve_halfedges(i).size() << " edges\n";
   }
   std::cout << joining << " seam curves join two singular vertices\n";
-  return r.cut_edges > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return EXIT_SUCCESS;
 }

@@ -179,13 +179,11 @@ Error_code extract_quad_mesh(const TriangleMesh& tm, UVMap uv_map, PolygonMesh& 
   result = Quad_extraction_result();
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  const bool trimmed = choose_parameter(get_parameter(np, internal_np::keep_trimmed_boundary), false);
-  const std::size_t rings = choose_parameter(get_parameter(np, internal_np::fold_over_repair_rings), std::size_t(6));
   internal::qex::Chart_mesh M;
   const Error_code code = internal::qex::build_chart_mesh(tm, vpm, uv_map, M);
   if(code != Error_code::SUCCESS)
     return code;
-  const Error_code extraction = internal::qex::extract_from_chart_mesh(M, false, trimmed, rings, quad_mesh, np_out, result, start);
+  const Error_code extraction = internal::qex::extract_from_chart_mesh(M, false, np, quad_mesh, np_out, result, start);
   result.time_total = internal::qex::seconds(start);
   return extraction;
 }
@@ -227,12 +225,8 @@ Error_code extract_quad_mesh(const Tangent_bundle<TriangleMesh, VertexPointMap>&
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              const NamedParametersOut& np_out = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   const auto start = internal::qex::Clock::now();
   result = Quad_extraction_result();
-  const bool trimmed = choose_parameter(get_parameter(np, internal_np::keep_trimmed_boundary), false);
-  const std::size_t rings = choose_parameter(get_parameter(np, internal_np::fold_over_repair_rings), std::size_t(6));
   internal::qex::Chart_mesh M;
   const Error_code code = internal::qex::build_chart_mesh(bundle, uv_map, map.seam_transitions, M);
   if(code != Error_code::SUCCESS)
@@ -241,7 +235,7 @@ Error_code extract_quad_mesh(const Tangent_bundle<TriangleMesh, VertexPointMap>&
       result.diagnostic = "the map's seam transitions do not match the bundle";
     return code;
   }
-  const Error_code extraction = internal::qex::extract_from_chart_mesh(M, true, trimmed, rings, quad_mesh, np_out, result, start);
+  const Error_code extraction = internal::qex::extract_from_chart_mesh(M, true, np, quad_mesh, np_out, result, start);
   result.time_total = internal::qex::seconds(start);
   return extraction;
 }

@@ -243,6 +243,26 @@ Error_code build_chart_mesh(const TriangleMesh& tm, VertexPointMap vpm, UVMap uv
   return Error_code::SUCCESS;
 }
 
+// Both sides of every interior edge: the transition of the opposite edge must be
+// the inverse (or is made so, with `make_inverse`); counts the rotated and
+// translated edges.
+inline Error_code pair_transitions(Chart_mesh& M, bool make_inverse)
+{
+  for(std::size_t e = 0; e < 3 * M.F; ++e)
+  {
+    const std::size_t o = M.opp[e];
+    if(o == npos || o < e)
+      continue;
+    if(make_inverse)
+      M.trans[o] = inverse(M.trans[e]);
+    else if(!(M.trans[o] == inverse(M.trans[e])))
+      return Error_code::NOT_AN_INTEGER_GRID_MAP;
+    M.rotated_edges += M.trans[e].r != 0;
+    M.translated_edges += M.trans[e].tx != 0 || M.trans[e].ty != 0;
+  }
+  return Error_code::SUCCESS;
+}
+
 // The transition of every interior edge: the grid symmetry that maps the edge's two
 // endpoints in one chart exactly onto the same endpoints in the other chart.
 inline Error_code compute_transitions(Chart_mesh& M)
@@ -280,21 +300,8 @@ inline Error_code compute_transitions(Chart_mesh& M)
       ++M.degenerate_uv_edges;
     M.trans[e] = g;
   }
-  // both sides must agree: trans[opp] = trans^-1
-  for(std::size_t e = 0; e < C; ++e)
-    if(M.opp[e] != npos)
-    {
-      if(M.opp[e] > e && M.degenerate_uv_edges == 0 && !(M.trans[M.opp[e]] == inverse(M.trans[e])))
-        return Error_code::NOT_AN_INTEGER_GRID_MAP;
-      if(M.opp[e] > e && M.degenerate_uv_edges != 0)
-        M.trans[M.opp[e]] = inverse(M.trans[e]);
-      if(M.opp[e] > e)
-      {
-        M.rotated_edges += M.trans[e].r != 0;
-        M.translated_edges += M.trans[e].tx != 0 || M.trans[e].ty != 0;
-      }
-    }
-  return Error_code::SUCCESS;
+  // both sides must agree: trans[opp] = trans^-1 (made so across an edge of zero uv length)
+  return pair_transitions(M, M.degenerate_uv_edges != 0);
 }
 
 // Reads the mesh of a tangent bundle and a map on it, with the transitions the
@@ -407,15 +414,8 @@ inline Error_code check_transitions(Chart_mesh& M)
               t[1] == std::floor(t[1]);
     }
     M.degenerate_uv_edges += fits > 1;
-    if(o > e)
-    {
-      if(!(M.trans[o] == inverse(g)))
-        return Error_code::NOT_AN_INTEGER_GRID_MAP;
-      M.rotated_edges += g.r != 0;
-      M.translated_edges += g.tx != 0 || g.ty != 0;
-    }
   }
-  return Error_code::SUCCESS;
+  return pair_transitions(M, false);
 }
 
 inline Error_code build_fans(Chart_mesh& M)

@@ -143,6 +143,21 @@ public:
     return points.size() - 1;
   }
 
+  // the point of border vertex v, made if it is not one yet (trimmed mode)
+  std::size_t border_vertex_point(std::size_t v)
+  {
+    if(vertex_point[v] == npos)
+    {
+      Qpoint p;
+      p.loc = AT_VERTEX;
+      p.elem = v;
+      p.border = true;
+      vertex_point[v] = points.size();
+      points.push_back(p);
+    }
+    return vertex_point[v];
+  }
+
   std::size_t lookup_point(std::size_t f, const P2& q, int where) const
   {
     if(where < 3)

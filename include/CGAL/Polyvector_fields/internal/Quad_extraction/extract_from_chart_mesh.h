@@ -18,7 +18,10 @@
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_over_repair.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/quad_cells.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/trimmed_boundary.h>
+#include <CGAL/Polyvector_fields/internal/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
+
+#include <CGAL/Named_function_parameters.h>
 
 #include <chrono>
 #include <cstddef>
@@ -192,13 +195,19 @@ Error_code trace_iso_lines(Extractor& X, bool trimmed, std::vector<Trace_end>& e
   return Error_code::SUCCESS;
 }
 
-// Everything after the chart mesh is read: `result` is a Quad_extraction_result;
-// setup_start is when the setup began (its time includes reading the charts).
-template <typename PolygonMesh, typename NamedParametersOut, typename Report>
-Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, bool trimmed, std::size_t rings,
+// Everything after the chart mesh is read, with the named parameters
+// keep_trimmed_boundary and fold_over_repair_rings of np: `result` is a
+// Quad_extraction_result; setup_start is when the setup began (its time
+// includes reading the charts).
+template <typename NamedParameters, typename PolygonMesh, typename NamedParametersOut, typename Report>
+Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, const NamedParameters& np,
                                    PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result,
                                    Clock::time_point setup_start)
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const bool trimmed = choose_parameter(get_parameter(np, internal_np::keep_trimmed_boundary), false);
+  const std::size_t rings = choose_parameter(get_parameter(np, internal_np::fold_over_repair_rings), std::size_t(6));
   Error_code code = transitions_and_fans(M, given_transitions, &result.diagnostic);
   if(code != Error_code::SUCCESS)
     return code;

@@ -49,17 +49,7 @@ Error_code close_trimmed_boundary(const Chart_mesh& M, Extractor& X, const std::
     std::size_t p = npos;
     if(E.hit_corner != npos)
     {
-      const std::size_t v = M.vertex[E.hit_corner];
-      if(X.vertex_point[v] == npos)
-      {
-        Qpoint P;
-        P.loc = AT_VERTEX;
-        P.elem = v;
-        P.border = true;
-        X.vertex_point[v] = X.points.size();
-        X.points.push_back(P);
-      }
-      p = X.vertex_point[v];
+      p = X.border_vertex_point(M.vertex[E.hit_corner]);
     }
     else
     {
@@ -136,15 +126,8 @@ Error_code close_trimmed_boundary(const Chart_mesh& M, Extractor& X, const std::
   };
   // border vertices that are not points yet become points
   for(std::size_t v = 0; v < M.V; ++v)
-    if(M.border_vertex[v] && X.vertex_point[v] == npos)
-    {
-      Qpoint P;
-      P.loc = AT_VERTEX;
-      P.elem = v;
-      P.border = true;
-      X.vertex_point[v] = X.points.size();
-      X.points.push_back(P);
-    }
+    if(M.border_vertex[v])
+      X.border_vertex_point(v);
   // rebuild the slot order of every border point: forward boundary, iso-lines ccw, backward boundary
   auto iso_order = [&](std::size_t s) {
     // (fan position, angle order in the sector) of an iso-line slot at a border vertex

@@ -139,7 +139,7 @@ TEST(FieldObject, StagesTakeTheField)
   EXPECT_EQ(a_field, a_map);
   // Frame-field measures refuse a field that is not a frame field.
   EXPECT_EQ(PVF::compute_frame_angles(Field(bundle, 6), boost::make_assoc_property_map(a_field)),
-            PVF::Error_code::INCONSISTENT_DEGREE);
+            PVF::Error_code::NOT_A_FRAME_FIELD);
 }
 
 // The frame-field algorithms optimise the field they are given, holding the
@@ -214,9 +214,9 @@ TEST(FieldObject, NonConvergenceIsReportedOneWay)
 
   // A field that is not a frame field is refused, and not touched.
   Field six(bundle, 6);
-  EXPECT_EQ(PVF::design_angle_bounded_frame_field(six, ab), PVF::Error_code::INCONSISTENT_DEGREE);
+  EXPECT_EQ(PVF::design_angle_bounded_frame_field(six, ab), PVF::Error_code::NOT_A_FRAME_FIELD);
   PVF::Conjugate_field_result cr;
-  EXPECT_EQ(PVF::design_conjugate_frame_field(six, cr), PVF::Error_code::INCONSISTENT_DEGREE);
+  EXPECT_EQ(PVF::design_conjugate_frame_field(six, cr), PVF::Error_code::NOT_A_FRAME_FIELD);
   // A bad parameter is reported before anything is computed.
   Field untouched = smooth;
   EXPECT_EQ(PVF::design_angle_bounded_frame_field(untouched, ab, PVF::parameters::angle_bound(0.0)),

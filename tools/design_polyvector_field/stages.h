@@ -445,9 +445,9 @@ Parametrization parametrize(const Options& o, Mesh& tm, const Bundle& bundle, co
     return p;
   p.uv = tm.add_property_map<Mesh::Halfedge_index, std::array<double, 2> >("h:pvf_uv").first;
   const PVF::Error_code code =
-    o.edge_length > 0 ? PVF::compute_integer_grid_map(bundle, field.coefficients, p.uv, p.result,
+    o.edge_length > 0 ? PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result,
                                                       PVF::parameters::target_edge_length(o.edge_length))
-                      : PVF::compute_integer_grid_map(bundle, field.coefficients, p.uv, p.result);
+                      : PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result);
   check(code, "parametrization");
   p.computed = true;
   clock.lap("parametrization");

@@ -94,7 +94,7 @@ struct Angle_bound_result
 ///
 /// \returns `SUCCESS`; `DID_NOT_CONVERGE` when some free face is still below the bound after the
 ///          iterations (then `field` and `result` hold the field of the last step and its report);
-///          `INCONSISTENT_DEGREE` if `field` is not a frame field; `INVALID_PARAMETER` or `NON_FINITE_VALUE`
+///          `NOT_A_FRAME_FIELD` if `field` is not a frame field; `INVALID_PARAMETER` or `NON_FINITE_VALUE`
 ///          for a bad parameter; or `SOLVER_FAILURE`. On any other failure `field` and `result` are not written.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TangentBundle,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -106,7 +106,7 @@ Error_code design_angle_bounded_frame_field(Polyvector_field<TangentBundle>& fie
   if(code != Error_code::SUCCESS)
     return code;
   if(!field.is_frame_field())
-    return Error_code::INCONSISTENT_DEGREE;
+    return Error_code::NOT_A_FRAME_FIELD;
   Polyvector_field<TangentBundle> optimized = field;
   Angle_bound_result r;
   code = internal::optimize_angle_bounded_field<ConcurrencyTag>(optimized, p, np, r);

@@ -16,6 +16,7 @@
 /// `Frame_field_comb`, is what `compute_integer_grid_map()` takes.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/Corner_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/comb_and_cut.h>
@@ -301,6 +302,25 @@ Error_code comb_frame_field(const Mesh_or_bundle& mesh_or_bundle, CoefficientMap
     put(cut_edge_map, e, comb.is_cut(h));
   }
   return Error_code::SUCCESS;
+}
+
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// combs the frame field `field` (degree 4, sign-symmetric: the designer's
+/// field, optimised or not by the frame-field algorithms) and computes its cut
+/// graph into `comb`, as the overload on a tangent bundle and a coefficient map.
+///
+/// \returns as that overload, and `NOT_A_FRAME_FIELD` if `field` is not of degree 4 and sign-symmetric.
+template <typename TangentBundle, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code comb_frame_field(const Polyvector_field<TangentBundle>& field, Frame_field_comb<TangentBundle>& comb,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  if(!field.is_frame_field())
+  {
+    comb = Frame_field_comb<TangentBundle>();
+    return Error_code::NOT_A_FRAME_FIELD;
+  }
+  return comb_frame_field(field.tangent_bundle(), field.coefficient_map(), comb, np);
 }
 
 } // namespace Polyvector_fields

@@ -327,6 +327,28 @@ Error_code compute_integer_grid_map(const Mesh_or_bundle& mesh_or_bundle, Coeffi
   return code;
 }
 
+/// \ingroup PkgPolyvectorFieldsParametrization
+///
+/// computes the seamless integer-grid map guided by the frame field `field`
+/// (degree 4, sign-symmetric), as the overload on a tangent bundle and a
+/// coefficient map: it combs the field once (`comb_frame_field()`), then maps
+/// the comb (the overload on a `Frame_field_comb`).
+///
+/// \returns as the overload on a coefficient map, and `NOT_A_FRAME_FIELD` if `field` is not of degree 4
+///          and sign-symmetric.
+template <typename TangentBundle, typename UVMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code compute_integer_grid_map(const Polyvector_field<TangentBundle>& field, UVMap uv_map,
+                                    Integer_grid_map_result& result,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  if(!field.is_frame_field())
+  {
+    result = Integer_grid_map_result();
+    return Error_code::NOT_A_FRAME_FIELD;
+  }
+  return compute_integer_grid_map(field.tangent_bundle(), field.coefficient_map(), uv_map, result, np);
+}
+
 } // namespace Polyvector_fields
 } // namespace CGAL
 

@@ -156,7 +156,7 @@ struct Conjugate_field_result
 /// \cgalNamedParamsEnd
 ///
 /// \returns `SUCCESS`; `DID_NOT_CONVERGE` when the stopping rule was not met within the iterations (then
-///          `field` and `result` hold the field of the last step and its report); `INCONSISTENT_DEGREE`
+///          `field` and `result` hold the field of the last step and its report); `NOT_A_FRAME_FIELD`
 ///          if `field` is not a frame field; `INVALID_PARAMETER` or `NON_FINITE_VALUE` for a bad parameter
 ///          or curvature; an error of `estimate_principal_curvatures()`; or `SOLVER_FAILURE`. On any
 ///          other failure `field` and `result` are not written.
@@ -172,7 +172,7 @@ Error_code design_conjugate_frame_field(Polyvector_field<TangentBundle>& field, 
   if(code != Error_code::SUCCESS)
     return code;
   if(!field.is_frame_field())
-    return Error_code::INCONSISTENT_DEGREE;
+    return Error_code::NOT_A_FRAME_FIELD;
   std::vector<std::array<double, 4> > S;
   std::vector<double> Khat, kmax;
   code = internal::face_curvature_of(field.tangent_bundle(), np, S, Khat, kmax);

@@ -38,8 +38,7 @@ namespace Polyvector_fields {
 ///
 /// \tparam AngleMap a model of `WritablePropertyMap` from faces to `double`
 ///
-/// \returns `SUCCESS`, the bundle's error, or `INCONSISTENT_DEGREE` if `field` is not a frame field
-///          (degree 4, sign-symmetric); nothing is written on failure.
+/// \returns `SUCCESS`, the bundle's error, or `NOT_A_FRAME_FIELD` if `field` is not of degree 4; nothing is written on failure.
 template <typename TangentBundle, typename AngleMap>
 Error_code compute_frame_angles(const Polyvector_field<TangentBundle>& field, AngleMap angle_map)
 {
@@ -47,7 +46,7 @@ Error_code compute_frame_angles(const Polyvector_field<TangentBundle>& field, An
   if(bundle.status() != Error_code::SUCCESS)
     return bundle.status();
   if(field.degree() != 4)
-    return Error_code::INCONSISTENT_DEGREE;
+    return Error_code::NOT_A_FRAME_FIELD;
   const std::vector<std::complex<double> >& c = field.coefficients();
   for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
   {
@@ -77,7 +76,7 @@ Error_code compute_conjugacy_deviation(const Polyvector_field<TangentBundle>& fi
   if(bundle.status() != Error_code::SUCCESS)
     return bundle.status();
   if(field.degree() != 4)
-    return Error_code::INCONSISTENT_DEGREE;
+    return Error_code::NOT_A_FRAME_FIELD;
   const std::vector<std::complex<double> >& c = field.coefficients();
   std::vector<double> deviation(bundle.number_of_faces());
   for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)

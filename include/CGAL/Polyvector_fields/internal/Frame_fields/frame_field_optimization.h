@@ -84,7 +84,7 @@ struct Local_global_run
 // The local-global iterations on the frame field `field`, in place:
 // `frame_step(f, u, v)` returns the frame of free face f after the local step,
 // `converged(c, iterations, lambda)` is the algorithm's measure (see
-// Local_global_optimizer::iterate()). Returns INCONSISTENT_DEGREE if `field`
+// Local_global_optimizer::iterate()). Returns NOT_A_FRAME_FIELD if `field`
 // is not a frame field, SOLVER_FAILURE if a global step fails, and
 // DID_NOT_CONVERGE (with the field of the last step) if the measure was not
 // met within the iterations.
@@ -94,7 +94,7 @@ Error_code optimize_frame_field(Polyvector_field<Bundle>& field, const Local_glo
                                 const Converged& converged, const NamedParameters& np, Local_global_run& run)
 {
   if(!field.is_frame_field())
-    return Error_code::INCONSISTENT_DEGREE;
+    return Error_code::NOT_A_FRAME_FIELD;
   auto optimizer = make_local_global_optimizer<ConcurrencyTag>(field, np);
   auto local_step = [&frame_step](std::size_t f, const Complex* c, Complex* target) {
     const auto uv = frame_vectors(c);

@@ -20,6 +20,8 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
+#include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
+#include <CGAL/Polyvector_fields/comb_frame_field.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
@@ -77,32 +79,42 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // 1. A conjugate frame field: its two directions are conjugate for the curvature,
-  //    the directions along which quads can be planar.
-  auto curvatures = mesh.add_property_map<Face, PVF::Principal_curvatures<Vector> >("f:curvatures").first;
-  auto field = mesh.add_property_map<Face, std::vector<std::complex<double> > >("f:field").first;
-  PVF::Conjugate_field_result conjugate;
-  code = PVF::estimate_principal_curvatures(bundle, curvatures);
+  // 1. The smooth frame field of the constraints, designed once: the field object carries its
+  //    bundle, degree, symmetry and constraints to the next stages.
+  PVF::Polyvector_field_designer<Mesh> designer(bundle, 4, PVF::parameters::sign_symmetric(true));
+  PVF::Polyvector_field<PVF::Tangent_bundle<Mesh> > field(bundle, 4, true);
+  code = designer.add_constraints(constraints);
   if(code == PVF::Error_code::SUCCESS)
-    code = PVF::design_conjugate_frame_field(bundle, constraints, field, conjugate,
-                                             PVF::parameters::principal_curvature_map(curvatures));
+    code = designer.solve(field);
+  // 2. Made conjugate in place: its two directions become conjugate for the curvature,
+  //    the directions along which quads can be planar; the constraints stay held.
+  auto curvatures = mesh.add_property_map<Face, PVF::Principal_curvatures<Vector> >("f:curvatures").first;
+  PVF::Conjugate_field_result conjugate;
+  if(code == PVF::Error_code::SUCCESS)
+    code = PVF::estimate_principal_curvatures(bundle, curvatures);
+  if(code == PVF::Error_code::SUCCESS)
+    code = PVF::design_conjugate_frame_field(field, conjugate, PVF::parameters::principal_curvature_map(curvatures));
   if(code != PVF::Error_code::SUCCESS)
   {
     std::cerr << "conjugate field: " << PVF::get_error_message(code) << std::endl;
     return EXIT_FAILURE;
   }
 
-  // 2. The seamless integer-grid map, on the same bundle: one uv unit is one quad of side edge_length.
+  // 3. Combed once, cut into a disk, then the seamless integer-grid map of the comb: one uv unit is
+  //    one quad of side edge_length, and the map returns the exact transition across every seam.
+  PVF::Frame_field_comb<PVF::Tangent_bundle<Mesh> > comb;
   auto uv = mesh.add_property_map<Halfedge, std::array<double, 2> >("h:uv").first;
   PVF::Integer_grid_map_result grid_map;
-  code = PVF::compute_integer_grid_map(bundle, field, uv, grid_map, PVF::parameters::target_edge_length(edge_length));
+  code = PVF::comb_frame_field(field, comb);
+  if(code == PVF::Error_code::SUCCESS)
+    code = PVF::compute_integer_grid_map(comb, uv, grid_map, PVF::parameters::target_edge_length(edge_length));
   if(code != PVF::Error_code::SUCCESS)
   {
     std::cerr << "integer-grid map: " << PVF::get_error_message(code) << std::endl;
     return EXIT_FAILURE;
   }
 
-  // 3. The quad mesh: one vertex per integer point, one edge per iso-line segment (whole quads only),
+  // 4. The quad mesh: one vertex per integer point, one edge per iso-line segment (whole quads only),
   //    traced through the seams by the exact transitions the map returned.
   Mesh quads;
   PVF::Quad_extraction_result extraction;
@@ -113,7 +125,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // 4. Planarity (distance between the diagonals over their mean length), then planarization to 1%,
+  // 5. Planarity (distance between the diagonals over their mean length), then planarization to 1%,
   //    close to the input surface.
   auto planarity = quads.add_property_map<Face, double>("f:planarity").first;
   PVF::Planarity_statistics before;

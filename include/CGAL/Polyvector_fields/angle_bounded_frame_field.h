@@ -102,20 +102,12 @@ Error_code design_angle_bounded_frame_field(Polyvector_field<TangentBundle>& fie
                                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::Angle_bound_parameters p;
-  Error_code code = internal::read_angle_bound_parameters(np, p);
+  const Error_code code = internal::read_angle_bound_parameters(np, p);
   if(code != Error_code::SUCCESS)
     return code;
-  if(!field.is_frame_field())
-    return Error_code::NOT_A_FRAME_FIELD;
-  Polyvector_field<TangentBundle> optimized = field;
-  Angle_bound_result r;
-  code = internal::optimize_angle_bounded_field<ConcurrencyTag>(optimized, p, np, r);
-  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
-  {
-    field = std::move(optimized);
-    result = r;
-  }
-  return code;
+  return internal::optimize_in_place(field, result, [&](Polyvector_field<TangentBundle>& optimized, Angle_bound_result& r) {
+    return internal::optimize_angle_bounded_field<ConcurrencyTag>(optimized, p, np, r);
+  });
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
@@ -145,17 +137,12 @@ Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle
 {
   // The parameters first: a bad one is reported before any design.
   internal::Angle_bound_parameters p;
-  Error_code code = internal::read_angle_bound_parameters(np, p);
+  const Error_code code = internal::read_angle_bound_parameters(np, p);
   if(code != Error_code::SUCCESS)
     return code;
-  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
-  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
-  code = internal::design_smooth_frame_field<ConcurrencyTag>(bundle, constraints, np, field);
-  if(code == Error_code::SUCCESS)
-    code = design_angle_bounded_frame_field<ConcurrencyTag>(field, result, np);
-  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
-    field.write_coefficients(coefficient_map);
-  return code;
+  return internal::design_then_optimize<ConcurrencyTag>(
+    mesh_or_bundle, constraints, coefficient_map, np,
+    [&](auto& field) { return design_angle_bounded_frame_field<ConcurrencyTag>(field, result, np); });
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields

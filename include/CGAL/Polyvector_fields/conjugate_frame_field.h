@@ -68,6 +68,18 @@ inline Conjugate_field_defaults conjugate_field_defaults(Conjugacy_stopping_rule
   return { 5e-3, 1e4, 50 };
 }
 
+namespace internal {
+
+// The named parameters of design_conjugate_frame_field(), with its rules and defaults.
+template <typename NamedParameters>
+Error_code read_conjugate_field_parameters(const NamedParameters& np, Conjugate_field_parameters& p)
+{
+  return read_conjugate_field_parameters(np, Conjugacy_stopping_rule::MEAN_DEVIATION,
+                                         Conjugacy_stopping_rule::RESIDUAL_SUM, &conjugate_field_defaults, p);
+}
+
+} // namespace internal
+
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
 /// reports on a run of `design_conjugate_frame_field()`. Residuals are sums
@@ -166,27 +178,18 @@ Error_code design_conjugate_frame_field(Polyvector_field<TangentBundle>& field, 
                                         const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::Conjugate_field_parameters p;
-  Error_code code = internal::read_conjugate_field_parameters(np, Conjugacy_stopping_rule::MEAN_DEVIATION,
-                                                              Conjugacy_stopping_rule::RESIDUAL_SUM,
-                                                              &conjugate_field_defaults, p);
+  Error_code code = internal::read_conjugate_field_parameters(np, p);
   if(code != Error_code::SUCCESS)
     return code;
-  if(!field.is_frame_field())
-    return Error_code::NOT_A_FRAME_FIELD;
-  std::vector<std::array<double, 4> > S;
-  std::vector<double> Khat, kmax;
-  code = internal::face_curvature_of(field.tangent_bundle(), np, S, Khat, kmax);
-  if(code != Error_code::SUCCESS)
-    return code;
-  Polyvector_field<TangentBundle> optimized = field;
-  Conjugate_field_result r;
-  code = internal::optimize_conjugate_field<ConcurrencyTag>(optimized, S, Khat, kmax, p, np, r);
-  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
-  {
-    field = std::move(optimized);
-    result = r;
-  }
-  return code;
+  return internal::optimize_in_place(field, result, [&](Polyvector_field<TangentBundle>& optimized,
+                                                        Conjugate_field_result& r) {
+    std::vector<std::array<double, 4> > S;
+    std::vector<double> Khat, kmax;
+    const Error_code curvature = internal::face_curvature_of(optimized.tangent_bundle(), np, S, Khat, kmax);
+    if(curvature != Error_code::SUCCESS)
+      return curvature;
+    return internal::optimize_conjugate_field<ConcurrencyTag>(optimized, S, Khat, kmax, p, np, r);
+  });
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields
@@ -210,19 +213,12 @@ Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, co
 {
   // The parameters first: a bad one is reported before any design.
   internal::Conjugate_field_parameters p;
-  Error_code code = internal::read_conjugate_field_parameters(np, Conjugacy_stopping_rule::MEAN_DEVIATION,
-                                                              Conjugacy_stopping_rule::RESIDUAL_SUM,
-                                                              &conjugate_field_defaults, p);
+  const Error_code code = internal::read_conjugate_field_parameters(np, p);
   if(code != Error_code::SUCCESS)
     return code;
-  const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
-  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
-  code = internal::design_smooth_frame_field<ConcurrencyTag>(bundle, constraints, np, field);
-  if(code == Error_code::SUCCESS)
-    code = design_conjugate_frame_field<ConcurrencyTag>(field, result, np);
-  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
-    field.write_coefficients(coefficient_map);
-  return code;
+  return internal::design_then_optimize<ConcurrencyTag>(
+    mesh_or_bundle, constraints, coefficient_map, np,
+    [&](auto& field) { return design_conjugate_frame_field<ConcurrencyTag>(field, result, np); });
 }
 
 /// \ingroup PkgPolyvectorFieldsFrameFields

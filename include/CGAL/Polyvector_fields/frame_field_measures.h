@@ -31,6 +31,19 @@
 namespace CGAL {
 namespace Polyvector_fields {
 
+namespace internal {
+
+// SUCCESS for a field of degree 4 on a valid bundle, the reason otherwise.
+template <typename TangentBundle>
+Error_code check_frame_field(const Polyvector_field<TangentBundle>& field)
+{
+  if(field.tangent_bundle().status() != Error_code::SUCCESS)
+    return field.tangent_bundle().status();
+  return field.degree() == 4 ? Error_code::SUCCESS : Error_code::NOT_A_FRAME_FIELD;
+}
+
+} // namespace internal
+
 /// \ingroup PkgPolyvectorFieldsFrameFields
 ///
 /// computes, for every face of the frame field `field`, the smallest angle
@@ -42,11 +55,10 @@ namespace Polyvector_fields {
 template <typename TangentBundle, typename AngleMap>
 Error_code compute_frame_angles(const Polyvector_field<TangentBundle>& field, AngleMap angle_map)
 {
+  const Error_code code = internal::check_frame_field(field);
+  if(code != Error_code::SUCCESS)
+    return code;
   const TangentBundle& bundle = field.tangent_bundle();
-  if(bundle.status() != Error_code::SUCCESS)
-    return bundle.status();
-  if(field.degree() != 4)
-    return Error_code::NOT_A_FRAME_FIELD;
   const std::vector<std::complex<double> >& c = field.coefficients();
   for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)
   {
@@ -72,11 +84,10 @@ Error_code compute_conjugacy_deviation(const Polyvector_field<TangentBundle>& fi
                                        DeviationMap deviation_map)
 {
   using boost::get;
+  const Error_code code = internal::check_frame_field(field);
+  if(code != Error_code::SUCCESS)
+    return code;
   const TangentBundle& bundle = field.tangent_bundle();
-  if(bundle.status() != Error_code::SUCCESS)
-    return bundle.status();
-  if(field.degree() != 4)
-    return Error_code::NOT_A_FRAME_FIELD;
   const std::vector<std::complex<double> >& c = field.coefficients();
   std::vector<double> deviation(bundle.number_of_faces());
   for(std::size_t f = 0; f < bundle.number_of_faces(); ++f)

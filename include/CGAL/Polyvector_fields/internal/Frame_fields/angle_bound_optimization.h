@@ -87,12 +87,7 @@ Error_code optimize_angle_bounded_field(Polyvector_field<Bundle>& field, const A
   Local_global_weights weights;
   weights.face_scale.assign(F, 1.0);
   weights.degree_penalty.assign(4, 0.0);
-  Local_global_run run;
-  const Error_code code = optimize_frame_field<ConcurrencyTag>(field, weights, p.schedule, frame_step, converged, np, run);
-  r.iterations = run.iterations;
-  r.factorizations = run.factorizations;
-  r.converged = run.converged;
-  return code;
+  return optimize_frame_field<ConcurrencyTag>(field, weights, p.schedule, frame_step, converged, np, r);
 }
 
 } // namespace internal

@@ -170,12 +170,7 @@ Error_code optimize_conjugate_field(Polyvector_field<Bundle>& field, const std::
   Local_global_weights weights;
   weights.face_scale = Khat;
   weights.degree_penalty = { 0, 0, p.orthogonality, 0 };
-  Local_global_run run;
-  const Error_code code = optimize_frame_field<ConcurrencyTag>(field, weights, p.schedule, frame_step, converged, np, run);
-  r.iterations = run.iterations;
-  r.factorizations = run.factorizations;
-  r.converged = run.converged;
-  return code;
+  return optimize_frame_field<ConcurrencyTag>(field, weights, p.schedule, frame_step, converged, np, r);
 }
 
 } // namespace internal

@@ -27,6 +27,8 @@
 
 #include <complex>
 #include <cstddef>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -73,25 +75,19 @@ std::vector<char> fixed_faces(const Polyvector_field<Bundle>& field)
   return fixed;
 }
 
-// What a run of the iterations did.
-struct Local_global_run
-{
-  std::size_t iterations = 0;
-  std::size_t factorizations = 0;
-  bool converged = false;
-};
-
 // The local-global iterations on the frame field `field`, in place:
 // `frame_step(f, u, v)` returns the frame of free face f after the local step,
 // `converged(c, iterations, lambda)` is the algorithm's measure (see
-// Local_global_optimizer::iterate()). Returns NOT_A_FRAME_FIELD if `field`
-// is not a frame field, SOLVER_FAILURE if a global step fails, and
+// Local_global_optimizer::iterate()); `r` (an Angle_bound_result or a
+// Conjugate_field_result) receives the counts. Returns NOT_A_FRAME_FIELD if
+// `field` is not a frame field, SOLVER_FAILURE if a global step fails, and
 // DID_NOT_CONVERGE (with the field of the last step) if the measure was not
 // met within the iterations.
-template <typename ConcurrencyTag, typename Bundle, typename NamedParameters, typename FrameStep, typename Converged>
+template <typename ConcurrencyTag, typename Bundle, typename NamedParameters, typename FrameStep, typename Converged,
+          typename Result>
 Error_code optimize_frame_field(Polyvector_field<Bundle>& field, const Local_global_weights& weights,
                                 const Local_global_parameters& p, const FrameStep& frame_step,
-                                const Converged& converged, const NamedParameters& np, Local_global_run& run)
+                                const Converged& converged, const NamedParameters& np, Result& r)
 {
   if(!field.is_frame_field())
     return Error_code::NOT_A_FRAME_FIELD;
@@ -102,12 +98,51 @@ Error_code optimize_frame_field(Polyvector_field<Bundle>& field, const Local_glo
     frame_coefficients(moved.first, moved.second, target);
   };
   std::vector<Complex> c = field.coefficients();
-  const Error_code code = optimizer.iterate(weights, p, local_step, converged, c, run.iterations, run.converged);
+  bool met = false;
+  const Error_code code = optimizer.iterate(weights, p, local_step, converged, c, r.iterations, met);
+  r.converged = met;
   if(code != Error_code::SUCCESS)
     return code;
-  run.factorizations = optimizer.factorizations();
+  r.factorizations = optimizer.factorizations();
   field.coefficients().swap(c);
-  return run.converged ? Error_code::SUCCESS : Error_code::DID_NOT_CONVERGE;
+  return met ? Error_code::SUCCESS : Error_code::DID_NOT_CONVERGE;
+}
+
+// The public overloads on a field: `run(optimized, report)` optimises a copy
+// of `field`; the field and `result` are written when it succeeds or does not
+// converge, and left as they were on any other failure.
+template <typename Bundle, typename Result, typename Run>
+Error_code optimize_in_place(Polyvector_field<Bundle>& field, Result& result, const Run& run)
+{
+  if(!field.is_frame_field())
+    return Error_code::NOT_A_FRAME_FIELD;
+  Polyvector_field<Bundle> optimized = field;
+  Result r;
+  const Error_code code = run(optimized, r);
+  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
+  {
+    field = std::move(optimized);
+    result = r;
+  }
+  return code;
+}
+
+// The public overloads on constraints and a coefficient map: the smooth field
+// of the constraints, then `optimize(field)` (the overload on a field); the
+// map is written when that one writes its field.
+template <typename ConcurrencyTag, typename Mesh_or_bundle, typename ConstraintRange, typename CoefficientMap,
+          typename NamedParameters, typename Optimize>
+Error_code design_then_optimize(const Mesh_or_bundle& mesh_or_bundle, const ConstraintRange& constraints,
+                                CoefficientMap coefficient_map, const NamedParameters& np, const Optimize& optimize)
+{
+  const auto& bundle = bundle_of(mesh_or_bundle, np);
+  Polyvector_field<std::decay_t<decltype(bundle)> > field(bundle, 4, true);
+  Error_code code = design_smooth_frame_field<ConcurrencyTag>(bundle, constraints, np, field);
+  if(code == Error_code::SUCCESS)
+    code = optimize(field);
+  if(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE)
+    field.write_coefficients(coefficient_map);
+  return code;
 }
 
 } // namespace internal

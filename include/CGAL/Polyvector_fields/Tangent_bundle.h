@@ -15,41 +15,25 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/face_frames.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
+#include <CGAL/Polyvector_fields/internal/Tangent_bundle/frames_and_transport.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-
 #include <CGAL/tags.h>
-#include <CGAL/Polyvector_fields/internal/parallel.h>
 
 #include <algorithm>
-#include <atomic>
 #include <complex>
 #include <cstddef>
 #include <memory>
-#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Polyvector_fields {
-namespace internal {
-
-// The BGL primitives are found by argument-dependent lookup, so that a mesh
-// whose graph traits are included after this header still works; these
-// helpers let classes with members of the same names reach the free functions.
-template <typename TriangleMesh>
-typename boost::graph_traits<TriangleMesh>::face_descriptor
-face_of(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
-{
-  return face(h, tm);
-}
-
-} // namespace internal
-
 /// \ingroup PkgPolyvectorFieldsFrames
 ///
 /// is the discrete tangent bundle of a triangle mesh (paper, Section 3.1): the
@@ -223,9 +207,7 @@ private:
   // the one computation of `edge_direction()` and of the transport.
   std::complex<double> edge_direction_in(halfedge_descriptor h, const Face_frame& frame) const
   {
-    const std::array<double, 3> d = internal::scaled_difference(point_of(target(h, m_tm)), point_of(source(h, m_tm)));
-    const std::complex<double> e = frame.to_complex(d[0], d[1], d[2]);
-    return e / std::abs(e);
+    return internal::edge_direction_in_frame(h, frame, m_tm, m_vpm);
   }
 
   // Faces and edges per thread range: below this TBB's overhead is not worth it.
@@ -234,123 +216,52 @@ private:
   template <typename ConcurrencyTag>
   void build()
   {
-    const std::size_t F = num_faces(m_tm);
-    m_faces.reserve(F);
-    m_face_index.reserve(F);
-    for(face_descriptor f : faces(m_tm))
-    {
-      m_face_index.add(f);
-      m_faces.push_back(f);
-    }
-    const std::size_t V = num_vertices(m_tm);
-    m_vertices.reserve(V);
-    m_vertex_index.reserve(V);
-    for(vertex_descriptor v : vertices(m_tm))
-    {
-      m_vertex_index.add(v);
-      m_vertices.push_back(v);
-    }
+    internal::number_elements(faces(m_tm), num_faces(m_tm), m_faces, m_face_index);
+    internal::number_elements(vertices(m_tm), num_vertices(m_tm), m_vertices, m_vertex_index);
     if(m_faces.empty())
     {
       m_status = Error_code::EMPTY_MESH;
       return;
     }
-
-    // The interior edges, in the order of edges(tm).
-    std::vector<halfedge_descriptor> interior;
-    interior.reserve(num_edges(m_tm));
-    for(auto e : edges(m_tm))
-    {
-      const halfedge_descriptor h = halfedge(e, m_tm);
-      if(!CGAL::is_border(h, m_tm) && !CGAL::is_border(opposite(h, m_tm), m_tm))
-        interior.push_back(h);  // natural boundary condition: boundary edges carry no term
-    }
+    const std::vector<halfedge_descriptor> interior = internal::interior_halfedges(m_tm);
 
     // The frames, each face on its own, while the calling thread also
     // allocates the edges (the first touch of their memory costs as much as
-    // computing a frame). The first invalid face is the one of smallest index,
-    // whichever thread meets it first.
+    // computing a frame).
     m_frames.resize(m_faces.size());  // not initialised: each frame is written once below
-    std::atomic<std::size_t> first_invalid(m_faces.size());
+    std::size_t first_invalid = m_faces.size();
     internal::invoke_both<ConcurrencyTag>(
-      [&] {
-        internal::for_each_range<ConcurrencyTag>(m_faces.size(), grain, [&](std::size_t begin, std::size_t end) {
-          for(std::size_t i = begin; i < end; ++i)
-          {
-            if(i >= first_invalid.load(std::memory_order_relaxed))
-              return;  // a face before this one failed
-            if(face_frame(m_faces[i], m_tm, m_frames[i], CGAL::parameters::vertex_point_map(m_vpm)) != Error_code::SUCCESS)
-            {
-              std::size_t current = first_invalid.load(std::memory_order_relaxed);
-              while(i < current && !first_invalid.compare_exchange_weak(current, i, std::memory_order_relaxed))
-              {}
-              return;
-            }
-          }
-        });
-      },
+      [&] { first_invalid = internal::compute_face_frames<ConcurrencyTag>(m_tm, m_vpm, m_faces, m_frames, grain); },
       [&] { m_edges.resize(interior.size()); });
-    if(first_invalid.load() < m_faces.size())
+    if(first_invalid < m_faces.size())
     {
-      // As a face-by-face loop leaves it: no frame from the invalid face on, no edge.
-      const std::size_t i = first_invalid.load();
-      std::fill(m_frames.begin() + std::ptrdiff_t(i), m_frames.end(), Face_frame());
-      Face_frame unused;
-      m_status = face_frame(m_faces[i], m_tm, unused, CGAL::parameters::vertex_point_map(m_vpm));
-      m_first_invalid_face = i;
-      std::vector<Dual_edge>().swap(m_edges);
+      set_invalid_face(first_invalid);
       return;
     }
 
-    internal::for_each_range<ConcurrencyTag>(m_edges.size(), grain, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        Dual_edge& d = m_edges[i];
-        d.h = interior[i];
-        d.f = index(internal::face_of(d.h, m_tm));
-        d.g = index(internal::face_of(opposite(d.h, m_tm), m_tm));
-      }
-    });
-
+    internal::set_dual_edge_faces<ConcurrencyTag>(m_tm, interior, m_face_index, m_edges, grain);
     // The transport of each edge on its own, while the calling thread also
     // finds the connected components (which read only the faces of the edges).
     internal::invoke_both<ConcurrencyTag>(
-      [&] {
-        internal::for_each_range<ConcurrencyTag>(m_edges.size(), grain, [&](std::size_t begin, std::size_t end) {
-          for(std::size_t i = begin; i < end; ++i)
-          {
-            Dual_edge& d = m_edges[i];
-            d.e_f = edge_direction_in(d.h, m_frames[d.f]);
-            d.e_g = -edge_direction_in(opposite(d.h, m_tm), m_frames[d.g]);
-          }
-        });
-      },
+      [&] { internal::compute_edge_transport<ConcurrencyTag>(m_tm, m_vpm, m_frames, m_edges, grain); },
       [&] { build_components(); });
+  }
+
+  // The state a face-by-face loop leaves when the face of index `i` has no
+  // frame: no frame from it on, no edge, and its error as the status.
+  void set_invalid_face(std::size_t i)
+  {
+    std::fill(m_frames.begin() + std::ptrdiff_t(i), m_frames.end(), Face_frame());
+    Face_frame unused;
+    m_status = face_frame(m_faces[i], m_tm, unused, CGAL::parameters::vertex_point_map(m_vpm));
+    m_first_invalid_face = i;
+    std::vector<Dual_edge>().swap(m_edges);
   }
 
   // The connected components, numbered in the order of their first face.
   void build_components()
   {
-    std::vector<std::size_t> parent(m_faces.size());
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    auto find = [&parent](std::size_t i) {
-      while(parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    for(const Dual_edge& d : m_edges)
-      parent[find(d.f)] = find(d.g);
-
-    m_component.resize(m_faces.size());
-    std::vector<std::size_t> label(m_faces.size(), std::size_t(-1));
-    m_number_of_components = 0;
-    for(std::size_t i = 0; i < m_faces.size(); ++i)
-    {
-      const std::size_t root = find(i);
-      if(label[root] == std::size_t(-1))
-        label[root] = m_number_of_components++;
-      m_component[i] = label[root];
-    }
+    m_number_of_components = internal::connected_face_components(m_faces.size(), m_edges, m_component);
   }
 
   const TriangleMesh& m_tm;

@@ -14,22 +14,14 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/IO/internal/polygon_soup.h>
-#include <CGAL/Polyvector_fields/IO/internal/soup_repair.h>
+#include <CGAL/Polyvector_fields/IO/internal/soup_to_mesh.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
-#include <CGAL/Polyvector_fields/IO/internal/triangulate_polygons.h>
-#include <CGAL/Polyvector_fields/face_frames.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
-#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cstddef>
 #include <string>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -64,146 +56,6 @@ struct Mesh_repair_report
            (repaired && isolated_vertices) || triangulated_faces || degenerate_faces;
   }
 };
-
-namespace internal {
-
-template <typename Mesh, typename = void>
-struct Has_collect_garbage : std::false_type {};
-template <typename Mesh>
-struct Has_collect_garbage<Mesh, std::void_t<decltype(std::declval<Mesh&>().collect_garbage())> > : std::true_type {};
-
-// Makes the face list dense again after removals (Surface_mesh keeps removed
-// elements until then).
-template <typename Mesh>
-void collect_garbage_if_any(Mesh& tm)
-{
-  if constexpr(Has_collect_garbage<Mesh>::value)
-    tm.collect_garbage();
-}
-
-template <typename Mesh>
-std::size_t count_faces(const Mesh& tm)
-{
-  std::size_t n = 0;
-  for(auto f : faces(tm))
-  {
-    (void)f;
-    ++n;
-  }
-  return n;
-}
-
-// The faces that cannot carry a frame, counted; the first in faces(tm) order.
-template <typename Mesh>
-std::size_t count_degenerate_faces(const Mesh& tm, typename boost::graph_traits<Mesh>::face_descriptor& first)
-{
-  using boost::get;
-  const auto vpm = get(CGAL::vertex_point, tm);
-  std::size_t count = 0;
-  for(auto f : faces(tm))
-  {
-    const auto h = halfedge(f, tm);
-    Face_frame frame;
-    if(Polyvector_fields::internal::triangle_frame(Polyvector_fields::internal::to_array(get(vpm, source(h, tm))),
-                                                   Polyvector_fields::internal::to_array(get(vpm, target(h, tm))),
-                                                   Polyvector_fields::internal::to_array(get(vpm, target(next(h, tm), tm))),
-                                                   frame) != Error_code::SUCCESS && count++ == 0)
-      first = f;
-  }
-  return count;
-}
-
-// The checks and repairs of read_triangle_mesh() on a soup already read.
-template <typename TriangleMesh>
-Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Mesh_repair_report& report, bool repair,
-                                 const Diagnostic& diagnostic)
-{
-  typedef boost::graph_traits<TriangleMesh> Graph_traits;
-  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
-  typedef typename Graph_traits::face_descriptor face_descriptor;
-  typedef typename boost::property_traits<
-    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
-
-  Mesh_repair_report r;
-  r.file_vertices = soup.points.size();
-  r.file_faces = soup.number_of_polygons();
-  const std::vector<std::size_t> file_lines = soup.polygon_line;
-  auto file_face_name = [&](std::size_t i) {
-    return "face " + std::to_string(i) +
-           (i < file_lines.size() ? " (line " + std::to_string(file_lines[i]) + ")" : std::string());
-  };
-  std::vector<std::size_t> source;
-  Soup_repair_counts counts;
-  Error_code code = check_or_repair_soup(soup, source, repair, counts, diagnostic);
-  if(code != Error_code::SUCCESS)
-    return code;
-  r.merged_points = counts.merged_points;
-  r.degenerate_polygons = counts.degenerate_polygons;
-  r.duplicate_faces = counts.duplicate_faces;
-  r.reoriented_faces = counts.reoriented_faces;
-  r.split_vertices = counts.split_vertices;
-  r.isolated_vertices = counts.isolated_vertices;
-
-  if(repair)
-  {
-    code = triangulate_soup_polygons(soup, source, r.triangulated_faces, diagnostic);
-    if(code != Error_code::SUCCESS)
-      return code;
-  }
-
-  // The mesh, face by face in soup order.
-  TriangleMesh mesh;
-  auto vpm = get(CGAL::vertex_point, mesh);
-  std::vector<vertex_descriptor> vertex(soup.points.size());
-  for(std::size_t v = 0; v < soup.points.size(); ++v)
-  {
-    vertex[v] = add_vertex(mesh);
-    put(vpm, vertex[v], Point(soup.points[v][0], soup.points[v][1], soup.points[v][2]));
-  }
-  // The file face of each face; a property of the mesh, so that it follows
-  // the faces through triangulation and garbage collection.
-  auto source_of = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  std::vector<vertex_descriptor> polygon;
-  for(std::size_t i = 0; i < soup.number_of_polygons(); ++i)
-  {
-    polygon.clear();
-    for(std::size_t k = 0; k < soup.size(i); ++k)
-      polygon.push_back(vertex[soup.polygon(i)[k]]);
-    const face_descriptor f = CGAL::Euler::add_face(polygon, mesh);
-    if(f == Graph_traits::null_face())
-      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, soup.face_name(i) + " cannot be added to the surface");
-    put(source_of, f, source[i]);
-  }
-
-  face_descriptor degenerate;
-  const std::size_t degenerate_faces = count_degenerate_faces(mesh, degenerate);
-  if(degenerate_faces > 0)
-  {
-    if(!repair)
-      return diagnostic.fail(Error_code::DEGENERATE_FACE,
-                             file_face_name(get(source_of, degenerate)) + " is degenerate: its area is (numerically) zero");
-    CGAL::Polygon_mesh_processing::remove_degenerate_faces(mesh);
-    collect_garbage_if_any(mesh);
-    r.degenerate_faces = degenerate_faces;
-    if(!CGAL::is_valid_polygon_mesh(mesh) || !CGAL::is_triangle_mesh(mesh))
-      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH,
-                             "the removal of the degenerate faces did not leave a valid triangle mesh");
-    if(count_faces(mesh) == 0)
-      return diagnostic.fail(Error_code::EMPTY_MESH, "no face is left once the degenerate ones are removed");
-    if(count_degenerate_faces(mesh, degenerate) > 0)
-      return diagnostic.fail(Error_code::DEGENERATE_FACE, "a triangle of zero area from " +
-                                                            file_face_name(get(source_of, degenerate)) +
-                                                            " cannot be removed");
-  }
-
-  for(face_descriptor f : faces(mesh))
-    r.source_face.push_back(get(source_of, f));
-  tm = std::move(mesh);
-  report = std::move(r);
-  return Error_code::SUCCESS;
-}
-
-} // namespace internal
 
 /// \ingroup PkgPolyvectorFieldsIO
 ///

@@ -14,22 +14,14 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
-#include <CGAL/Polyvector_fields/IO/internal/mesh_indices.h>
-#include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
+#include <CGAL/Polyvector_fields/IO/internal/vtk_text.h>
 #include <CGAL/Polyvector_fields/IO/singularities.h>
 #include <CGAL/Polyvector_fields/internal/parameters.h>
 
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/number_utils.h>
 
-#include <boost/property_map/property_map.hpp>
-
-#include <cmath>
 #include <cstddef>
 #include <ostream>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,79 +38,15 @@ typedef std::vector<std::pair<std::string, std::vector<double> > > Face_scalar_a
 
 namespace internal {
 
-// Longest array name written; VTK's legacy reader keeps names in 256-byte buffers.
-constexpr std::size_t vtk_max_name_length = 200;
-
-// A VTK-safe name: letters, digits, '_', '-' and '.', at most
-// vtk_max_name_length characters. Blanks would cut the name, and the legacy
-// reader decodes '%' escapes.
-inline bool is_vtk_safe_name(const std::string& name)
-{
-  if(name.empty() || name.size() > vtk_max_name_length)
-    return false;
-  for(char c : name)
-  {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || is_digit(c) ||
-                    c == '_' || c == '-' || c == '.';
-    if(!ok)
-      return false;
-  }
-  return true;
-}
-
-inline std::string vtk_root_name(std::size_t k)
-{
-  std::string name = "root_";
-  append_integer(name, k);
-  return name;
-}
-
-inline void append_scalar_header(std::string& text, const std::string& name, const char* type)
-{
-  text += "SCALARS ";
-  text += name;
-  text += ' ';
-  text += type;
-  text += " 1\nLOOKUP_TABLE default\n";
-}
-
-// Builds the whole file. `is_constrained` is null when no constraint list is given.
-// Turns a list of constrained faces into one flag per face.
-template <typename TriangleMesh>
-Error_code constrained_flags(const TriangleMesh& tm,
-                             const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& list,
-                             std::vector<bool>& flags)
-{
-  const auto faces = face_list(tm);
-  const auto face_index = make_index(faces);
-  std::vector<bool> result(faces.size(), false);
-  for(const auto f : list)
-  {
-    std::size_t id = 0;
-    if(!face_index.find(f, id))
-      return Error_code::INVALID_FACE;
-    result[id] = true;
-  }
-  flags = std::move(result);
-  return Error_code::SUCCESS;
-}
-
+// Reads the named parameters of write_vtk() and builds the whole file.
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename NamedParameters>
 Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N,
                          const SingularityRange& singularities, const NamedParameters& np, std::string& out)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using boost::get;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
-  if(N == 0)
-    return Error_code::INVALID_DEGREE;
-  const auto faces = face_list(tm);
-  const auto vertices = vertex_list(tm);
-  const std::size_t F = faces.size();
-  if(F == 0)
-    return Error_code::EMPTY_MESH;
   static const Face_scalar_arrays no_arrays;
   const Face_scalar_arrays& face_scalars = *choose_parameter(
     get_parameter(np, Polyvector_fields::internal_np::face_scalars), &no_arrays);
@@ -127,177 +55,9 @@ Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N
     choose_parameter(get_parameter(np, Polyvector_fields::internal_np::is_constrained), static_cast<const std::vector<bool>*>(nullptr));
   const std::vector<face_descriptor>* list = choose_parameter(
     get_parameter(np, Polyvector_fields::internal_np::constrained_faces), static_cast<const std::vector<face_descriptor>*>(nullptr));
-  std::vector<bool> list_flags;
-  if(list != nullptr)
-  {
-    const Error_code code = constrained_flags(tm, *list, list_flags);
-    if(code != Error_code::SUCCESS)
-      return code;
-    flags = &list_flags;
-  }
-  const std::vector<bool>* is_constrained = flags;
-  if(is_constrained != nullptr && is_constrained->size() != F)
-    return Error_code::INVALID_PARAMETER;
-
-  // Names: VTK-safe and pairwise distinct, reserved names included.
-  std::set<std::string> names;
-  for(std::size_t k = 0; k < N; ++k)
-    names.insert(vtk_root_name(k));
-  names.insert("singularity_index");
-  if(is_constrained != nullptr)
-    names.insert("is_constrained");
-  for(const auto& array : face_scalars)
-  {
-    if(!is_vtk_safe_name(array.first) || !names.insert(array.first).second || array.second.size() != F)
-      return Error_code::INVALID_PARAMETER;
-    for(double x : array.second)
-      if(!std::isfinite(x))
-        return Error_code::NON_FINITE_VALUE;
-  }
-
-  std::vector<std::pair<std::size_t, int> > singular;
-  const Error_code code = singularity_ids(tm, singularities, singular);
-  if(code != Error_code::SUCCESS)
-    return code;
-  const std::size_t S = singular.size();
-
-  std::string text = "# vtk DataFile Version 3.0\nCGAL Polyvector Fields: ";
-  append_integer(text, N);
-  text += "-PolyVector field\nASCII\nDATASET UNSTRUCTURED_GRID\n";
-
-  // Points.
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  text += "POINTS ";
-  append_integer(text, vertices.size());
-  text += " double\n";
-  for(const auto v : vertices)
-  {
-    const auto& p = get(vpm, v);
-    const double xyz[3] = { CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) };
-    for(int c = 0; c < 3; ++c)
-    {
-      if(!std::isfinite(xyz[c]))
-        return Error_code::NON_FINITE_VALUE;
-      if(c > 0)
-        text += ' ';
-      append_double(text, xyz[c]);
-    }
-    text += '\n';
-  }
-
-  // Cells: the triangles, then one VTK_VERTEX per singularity.
-  const auto vertex_index = make_index(vertices);
-  text += "CELLS ";
-  append_integer(text, F + S);
-  text += ' ';
-  append_integer(text, 4 * F + 2 * S);
-  text += '\n';
-  for(const auto f : faces)
-  {
-    // Unqualified calls: the graph functions are found by ADL whatever the
-    // order in which the mesh header and this one were included.
-    const auto h = halfedge(f, tm);
-    if(next(next(next(h, tm), tm), tm) != h)
-      return Error_code::NON_TRIANGLE_FACE;
-    text += '3';
-    for(const auto v : { source(h, tm), target(h, tm), target(next(h, tm), tm) })
-    {
-      std::size_t id = 0;
-      if(!vertex_index.find(v, id))
-        return Error_code::INVALID_PARAMETER;  // a face refers to a vertex outside vertices(tm)
-      text += ' ';
-      append_integer(text, id);
-    }
-    text += '\n';
-  }
-  for(const auto& s : singular)
-  {
-    text += "1 ";
-    append_integer(text, s.first);
-    text += '\n';
-  }
-  text += "CELL_TYPES ";
-  append_integer(text, F + S);
-  text += '\n';
-  for(std::size_t i = 0; i < F; ++i)
-    text += "5\n";
-  for(std::size_t i = 0; i < S; ++i)
-    text += "1\n";
-
-  // Cell data.
-  text += "CELL_DATA ";
-  append_integer(text, F + S);
-  text += '\n';
-  std::vector<std::vector<double> > roots(N, std::vector<double>(3 * F));
-  for(std::size_t i = 0; i < F; ++i)
-  {
-    const auto& face_roots = get(root_map, faces[i]);
-    if(std::size_t(face_roots.size()) != N)
-      return Error_code::INCONSISTENT_DEGREE;
-    std::size_t k = 0;
-    for(const auto& u : face_roots)
-    {
-      const double xyz[3] = { CGAL::to_double(u.x()), CGAL::to_double(u.y()), CGAL::to_double(u.z()) };
-      for(int c = 0; c < 3; ++c)
-      {
-        if(!std::isfinite(xyz[c]))
-          return Error_code::NON_FINITE_VALUE;
-        roots[k][3 * i + c] = xyz[c];
-      }
-      ++k;
-    }
-  }
-  for(std::size_t k = 0; k < N; ++k)
-  {
-    text += "VECTORS ";
-    text += vtk_root_name(k);
-    text += " double\n";
-    for(std::size_t i = 0; i < F; ++i)
-    {
-      append_double(text, roots[k][3 * i]);
-      text += ' ';
-      append_double(text, roots[k][3 * i + 1]);
-      text += ' ';
-      append_double(text, roots[k][3 * i + 2]);
-      text += '\n';
-    }
-    for(std::size_t i = 0; i < S; ++i)
-      text += "0 0 0\n";
-  }
-
-  append_scalar_header(text, "singularity_index", "double");
-  for(std::size_t i = 0; i < F; ++i)
-    text += "0\n";
-  for(const auto& s : singular)
-  {
-    append_double(text, double(s.second) / double(N));
-    text += '\n';
-  }
-
-  if(is_constrained != nullptr)
-  {
-    append_scalar_header(text, "is_constrained", "int");
-    for(std::size_t i = 0; i < F; ++i)
-      text += (*is_constrained)[i] ? "1\n" : "0\n";
-    for(std::size_t i = 0; i < S; ++i)
-      text += "0\n";
-  }
-
-  for(const auto& array : face_scalars)
-  {
-    append_scalar_header(text, array.first, "double");
-    for(double x : array.second)
-    {
-      append_double(text, x);
-      text += '\n';
-    }
-    for(std::size_t i = 0; i < S; ++i)
-      text += "0\n";
-  }
-
-  out = std::move(text);
-  return Error_code::SUCCESS;
+  return vtk_text(tm, root_map, N, singularities, face_scalars, flags, list, vpm, out);
 }
 
 } // namespace internal

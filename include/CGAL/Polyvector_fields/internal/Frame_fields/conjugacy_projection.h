@@ -16,7 +16,7 @@
 // Everything here is per-face arithmetic in the face's orthonormal frame; no
 // mesh is involved. A complex number x + iy is the vector (x, y) of the frame.
 
-#include <CGAL/Polyvector_fields/internal/Frame_fields/curvature_tensor.h>
+#include <CGAL/Polyvector_fields/internal/Curvature/curvature_tensor.h>
 
 #include <CGAL/assertions.h>
 

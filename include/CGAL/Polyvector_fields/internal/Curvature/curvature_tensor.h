@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_CURVATURE_TENSOR_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_CURVATURE_TENSOR_H
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_CURVATURE_CURVATURE_TENSOR_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_CURVATURE_CURVATURE_TENSOR_H
 
 // Small dense helpers for curvature tensors: moving a tangent frame from one
 // plane to another, and the eigen-decomposition of a symmetric 2x2 matrix
@@ -115,4 +115,4 @@ bool curvature_integral_in_range(T v, long long lo, long long hi)
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_FRAME_FIELDS_CURVATURE_TENSOR_H
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_CURVATURE_CURVATURE_TENSOR_H

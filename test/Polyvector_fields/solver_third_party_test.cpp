@@ -244,7 +244,9 @@ void bumpy_quad_grid(int n, Mesh& quads, Mesh& triangles)
     }
 }
 
-// The planarizer's real system through the model, against the default solver.
+// The planarizer's real system through the model, against the default solver:
+// 20 iterations towards a threshold of 0.2% (not reached, or reached: the
+// same either way), one factorization through the model.
 TEST(ThirdPartySolver, PlanarizerUsesTheModelOnRealSystems)
 {
   Mesh quads, reference;
@@ -252,19 +254,25 @@ TEST(ThirdPartySolver, PlanarizerUsesTheModelOnRealSystems)
   Mesh by_default = quads, by_model = quads;
   third_party::Ldlt_solver solver;
   PVF::Planarization_result r_default, r_model;
-  ASSERT_EQ(PVF::planarize_quad_mesh(by_default, reference, r_default, PVF::parameters::planarity_threshold(0.002)),
-            PVF::Error_code::SUCCESS);
-  ASSERT_EQ(PVF::planarize_quad_mesh(by_model, reference, r_model,
-                                     PVF::parameters::planarity_threshold(0.002).sparse_linear_solver(solver)),
-            PVF::Error_code::SUCCESS);
+  const auto np = PVF::parameters::planarity_threshold(0.002).number_of_iterations(20);
+  const PVF::Error_code code_default = PVF::planarize_quad_mesh(by_default, reference, r_default, np);
+  const PVF::Error_code code_model =
+    PVF::planarize_quad_mesh(by_model, reference, r_model, np.sparse_linear_solver(solver));
+  EXPECT_EQ(code_model, code_default);
+  EXPECT_TRUE(code_model == PVF::Error_code::SUCCESS || code_model == PVF::Error_code::DID_NOT_CONVERGE);
   EXPECT_EQ(solver.log->real_factorizations.load(), 1);
+  EXPECT_GT(r_model.max_planarity_before, 0.002);
   EXPECT_GT(r_model.iterations, 0u);
   EXPECT_EQ(r_model.iterations, r_default.iterations);
-  EXPECT_LE(r_model.max_planarity_after, 0.002);
+  EXPECT_LT(r_model.max_planarity_after, r_model.max_planarity_before);
+  EXPECT_GT(r_model.max_displacement, 0.0);
+  EXPECT_NEAR(r_model.max_displacement, r_default.max_displacement, 1e-12);
+  EXPECT_NEAR(r_model.max_planarity_after, r_default.max_planarity_after, 1e-12);
+  EXPECT_NEAR(r_model.max_distance, r_default.max_distance, 1e-12);
   double largest = 0;
   for(auto v : vertices(quads))
     largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(by_model.point(v), by_default.point(v))));
-  EXPECT_LT(largest, 1e-10);
+  EXPECT_LT(largest, 1e-10);  // the meshes as they were, or both planarized alike
 }
 
 } // namespace

@@ -92,7 +92,7 @@ void BM_planar_quads(benchmark::State& state)
     Mesh quads;
     start = std::chrono::steady_clock::now();
     if(code == PVF::Error_code::SUCCESS)
-      code = PVF::extract_quad_mesh(tm, boost::make_assoc_property_map(uv), quads, extraction);
+      code = PVF::extract_quad_mesh(bundle, boost::make_assoc_property_map(uv), map_result, quads, extraction);
     t_extraction = seconds_since(start);
     auto planarity = quads.add_property_map<Mesh::Face_index, double>("f:planarity").first;
     start = std::chrono::steady_clock::now();

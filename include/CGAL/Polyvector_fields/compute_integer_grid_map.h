@@ -96,7 +96,7 @@ struct Integer_grid_map_result
   double max_singularity_residual = 0;    ///< worst distance of a singular corner to the integer grid (output)
   std::size_t inconsistencies = 0;        ///< internal checks that failed (expected 0)
   // times in seconds
-  double time_comb = 0;           ///< the tangent bundle (when a mesh is given), matching, singularities, combing, cut, seam curves
+  double time_comb = 0;           ///< the tangent bundle (when a mesh is given), matching, singularities, combing, cut, seam curves (0 when a comb is given)
   double time_reduction = 0;      ///< sectors, seam relations, exact elimination over Z[i]
   double time_assembly = 0;       ///< gradient operator and normal equations (all rounds)
   double time_factorization = 0;  ///< sparse factorizations (all rounds)

@@ -98,9 +98,7 @@ TEST(Design, FlatMeshConstantField)
       if(sign_symmetric && N % 2)
         continue;
       Mesh tm = grid(8, 9);
-      const Rigid_motion motion{ unsigned(N) };  // a tilted plane, not z = 0
-      for(auto v : vertices(tm))
-        tm.point(v) = motion(tm.point(v));
+      Rigid_motion{ unsigned(N) }.move(tm);  // a tilted plane, not z = 0
       std::mt19937 rng{ unsigned(7 * N) };
       PVF::Face_frame frame;
       PVF::face_frame(*faces(tm).begin(), tm, frame);
@@ -366,12 +364,9 @@ TEST(Invariance, RigidMotion)
     Field field = design(tm, N, constraints, PVF::parameters::sign_symmetric(sign_symmetric));
     const Rigid_motion motion(23);
     Mesh moved = tm;
-    for(auto v : vertices(moved))
-      moved.point(v) = motion(moved.point(v));
+    motion.move(moved);
     std::vector<Constraint> moved_constraints = constraints;
-    for(Constraint& c : moved_constraints)
-      for(Vector& v : c.vectors)
-        v = motion(v);
+    motion.move(moved_constraints);
     Field moved_field = design(moved, N, moved_constraints, PVF::parameters::sign_symmetric(sign_symmetric), "moved");
     double worst = 0;
     for(Face f : faces(tm))

@@ -26,6 +26,8 @@
 
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,13 +46,7 @@ namespace {
 const double eps = std::numeric_limits<double>::epsilon();
 const double two_pi = 6.283185307179586476925286766559;
 
-Complex random_complex(std::mt19937_64& rng, double scale = 1.)
-{
-  std::normal_distribution<double> normal(0., 1.);
-  const double x = normal(rng);
-  const double y = normal(rng);
-  return scale * Complex(x, y);
-}
+using pvf_test::random_complex;
 
 std::vector<Complex> random_roots(std::mt19937_64& rng, std::size_t n, double scale)
 {

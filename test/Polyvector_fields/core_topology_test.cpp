@@ -285,14 +285,19 @@ void expect_parallel_bundle_identical(const TriangleMesh& tm, const std::string&
 {
   typedef PVF::Tangent_bundle<TriangleMesh> Bundle;
   const Bundle sequential(tm, CGAL::Sequential_tag());
-  const Bundle parallel(tm, CGAL::Parallel_tag());
   const Bundle by_default(tm);
-  const Bundle with_map(tm, CGAL::get_const_property_map(CGAL::vertex_point, tm), CGAL::Parallel_tag());
   ASSERT_EQ(sequential.status(), PVF::Error_code::SUCCESS) << what;
   ASSERT_GT(sequential.number_of_faces(), 8 * 4096u) << what << ": too small to be split among threads";
-  expect_identical_bundles(sequential, parallel, what + ", Parallel_tag");
   expect_identical_bundles(sequential, by_default, what + ", default tag");
+#ifdef CGAL_LINKED_WITH_TBB
+  const Bundle parallel(tm, CGAL::Parallel_tag());
+  const Bundle with_map(tm, CGAL::get_const_property_map(CGAL::vertex_point, tm), CGAL::Parallel_tag());
+  expect_identical_bundles(sequential, parallel, what + ", Parallel_tag");
   expect_identical_bundles(sequential, with_map, what + ", Parallel_tag and point map");
+#else
+  // CGAL::Parallel_tag needs TBB; the default tag is then sequential.
+  const Bundle& parallel = by_default;
+#endif
 
   std::size_t frames = 0, directions = 0;
   for(std::size_t i = 0; i < parallel.number_of_faces(); ++i)
@@ -391,7 +396,9 @@ void expect_parallel_singularities_identical(const TriangleMesh& tm, std::size_t
     EXPECT_EQ(found_only.size(), found.size()) << what << how;
   };
   check(CGAL::Sequential_tag(), ", Sequential_tag");
+#ifdef CGAL_LINKED_WITH_TBB
   check(CGAL::Parallel_tag(), ", Parallel_tag");
+#endif
   check(CGAL::Parallel_if_available_tag(), ", Parallel_if_available_tag");
 }
 
@@ -439,7 +446,11 @@ TEST(Parallel, TangentBundleReportsTheFirstInvalidFace)
   ASSERT_GT(expected, 4096u);
   ASSERT_LT(expected, 20000u);
   const PVF::Tangent_bundle<Mesh> sequential(tm, CGAL::Sequential_tag());
+#ifdef CGAL_LINKED_WITH_TBB
   const PVF::Tangent_bundle<Mesh> parallel(tm, CGAL::Parallel_tag());
+#else
+  const PVF::Tangent_bundle<Mesh> parallel(tm);  // CGAL::Parallel_tag needs TBB; the default tag is then sequential
+#endif
   EXPECT_EQ(sequential.status(), PVF::Error_code::DEGENERATE_FACE);
   EXPECT_EQ(sequential.first_invalid_face(), expected);
   EXPECT_TRUE(sequential.interior_edges().empty());

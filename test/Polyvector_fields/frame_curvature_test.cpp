@@ -45,6 +45,10 @@
 #error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
 #endif
 
+// The names of this file stay in its own namespace: the group is built as one
+// translation unit (unity build).
+namespace pvf_frame_curvature_test {
+
 namespace {
 
 namespace PVF = CGAL::Polyvector_fields;
@@ -886,3 +890,5 @@ TEST(CurvatureConstraints, InvalidInput)
   EXPECT_EQ(PVF::select_curvature_constraints(empty, empty_map, out), PVF::Error_code::EMPTY_MESH);
   EXPECT_EQ(out.size(), 1u);
 }
+
+} // namespace pvf_frame_curvature_test

@@ -27,6 +27,10 @@
 #include <map>
 #include <random>
 
+// The names of this file stay in its own namespace: the group is built as one
+// translation unit (unity build).
+namespace pvf_frame_field_test {
+
 namespace PVF = CGAL::Polyvector_fields;
 using namespace pvf_test;
 
@@ -277,12 +281,9 @@ TEST(Conjugate, RigidMotionAndPolyhedron)
 
   const Rigid_motion motion(7);
   Mesh moved = tm;
-  for(auto v : vertices(moved))
-    moved.point(v) = motion(moved.point(v));
+  motion.move(moved);
   std::vector<Constraint> moved_constraints = constraints;
-  for(Constraint& c : moved_constraints)
-    for(Vector& v : c.vectors)
-      v = motion(v);
+  motion.move(moved_constraints);
   auto moved_roots = solve(moved, moved_constraints, "b");
   double worst = 0, largest = 0;
   for(Face f : faces(tm))
@@ -531,3 +532,5 @@ TEST(SmoothnessWeights, FrameFieldsUseThem)
   EXPECT_LT(difference, 1e-9 * scale);
   EXPECT_GT(weights_change, 1e-3 * scale);
 }
+
+} // namespace pvf_frame_field_test

@@ -12,6 +12,8 @@
 #include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/conjugacy_projection.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,6 +26,10 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+// The names of this file stay in its own namespace: the group is built as one
+// translation unit (unity build).
+namespace pvf_frame_local_steps_test {
 
 namespace {
 
@@ -175,11 +181,7 @@ void expect_conjugate(const Matrix2& S, Complex u, Complex v, const std::string&
     << what << " residual " << r;
 }
 
-Complex random_complex(std::mt19937_64& rng, double scale = 1.)
-{
-  std::normal_distribution<double> g(0., scale);
-  return Complex(g(rng), g(rng));
-}
+using pvf_test::random_complex;
 
 } // namespace
 
@@ -606,3 +608,5 @@ TEST(FrameLocalSteps, AngleBoundParallelAntiparallelAndZero)
     EXPECT_EQ(q.second, above);
   }
 }
+
+} // namespace pvf_frame_local_steps_test

@@ -29,27 +29,12 @@
 #include <string>
 #include <vector>
 
-#ifndef PVF_DATA_DIR
-#error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
-#endif
-
 #include "io_test_support.h"
 
 namespace {
 
 using namespace pvf_io_test;
-
-namespace PVF = CGAL::Polyvector_fields;
 namespace PIO = CGAL::Polyvector_fields::IO;
-namespace fs = std::filesystem;
-using PVF::Error_code;
-
-typedef CGAL::Simple_cartesian<double> SC;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
-
-
-
-
 
 template <typename TriangleMesh>
 struct Types
@@ -61,24 +46,6 @@ struct Types
   typedef PVF::Face_constraint<face_descriptor, Vector_3> Constraint;
   typedef std::vector<Constraint> Constraints;
 };
-
-// A recognisable content, to check that a failed read leaves the output alone.
-template <typename TriangleMesh>
-typename Types<TriangleMesh>::Constraints sentinel(const TriangleMesh& tm)
-{
-  typename Types<TriangleMesh>::Constraint c;
-  c.face = *faces(tm).begin();
-  c.vectors = { typename Types<TriangleMesh>::Vector_3(42, 43, 44) };
-  c.weight = 7;
-  return { c };
-}
-
-template <typename Constraints>
-bool is_sentinel(const Constraints& out)
-{
-  return out.size() == 1 && out[0].vectors.size() == 1 && out[0].vectors[0].x() == 42 &&
-         out[0].vectors[0].y() == 43 && out[0].vectors[0].z() == 44 && out[0].weight == 7;
-}
 
 template <typename TriangleMesh>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_vector(const TriangleMesh& tm)
@@ -113,7 +80,7 @@ TYPED_TEST(Constraints_test, ReadsCommentsBlankLinesAndRoundTrips)
     "#0 9 9 9  (commented out)\n"
     "+7 -1.5 2 3 # explicit plus sign\n"
     "0 0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9#no blank before the comment";
-  Constraints out = sentinel(tm);
+  Constraints out = sentinel_constraints(tm);
   std::istringstream is(text);
   ASSERT_EQ(PIO::read_constraints(is, tm, out), Error_code::SUCCESS);
   ASSERT_EQ(out.size(), 4u);
@@ -142,7 +109,7 @@ TYPED_TEST(Constraints_test, ReadsCommentsBlankLinesAndRoundTrips)
   const std::string filename = dir.file("c.txt");
   ASSERT_EQ(PIO::write_constraints(filename, tm, out), Error_code::SUCCESS);
   EXPECT_EQ(dir.entries(), std::set<std::string>{ "c.txt" });
-  Constraints back = sentinel(tm);
+  Constraints back = sentinel_constraints(tm);
   ASSERT_EQ(PIO::read_constraints(filename, tm, back), Error_code::SUCCESS);
   ASSERT_EQ(back.size(), out.size());
   for(std::size_t i = 0; i < out.size(); ++i)
@@ -189,17 +156,17 @@ TEST(Constraints, BadTextLeavesOutputUntouched)
   };
   for(const auto& c : cases)
   {
-    auto out = sentinel(tm);
+    auto out = sentinel_constraints(tm);
     std::istringstream is(c.first);
     EXPECT_EQ(PIO::read_constraints(is, tm, out), c.second) << c.first;
-    EXPECT_TRUE(is_sentinel(out)) << c.first;
+    EXPECT_TRUE(is_sentinel(tm, out)) << c.first;
   }
-  auto out = sentinel(tm);
+  auto out = sentinel_constraints(tm);
   EXPECT_EQ(PIO::read_constraints(data_file("no_such_file.txt"), tm, out), Error_code::CANNOT_OPEN_FILE);
   std::istringstream failed("0 1 0 0\n");
   failed.setstate(std::ios::failbit);
   EXPECT_EQ(PIO::read_constraints(failed, tm, out), Error_code::CANNOT_OPEN_FILE);
-  EXPECT_TRUE(is_sentinel(out));
+  EXPECT_TRUE(is_sentinel(tm, out));
 }
 
 TEST(Constraints, BadConstraintsAreNotWritten)
@@ -278,7 +245,7 @@ TYPED_TEST(Dmat_test, InspiredMesh)
   ASSERT_EQ(faces(tm).size(), 4288u);
   const auto fv = face_vector(tm);
 
-  Constraints out = sentinel(tm);
+  Constraints out = sentinel_constraints(tm);
   ASSERT_EQ(PIO::read_dmat_constraints(data_file("inspired_mesh_b.dmat"), data_file("inspired_mesh_bc.dmat"), tm, out),
             Error_code::SUCCESS);
   ASSERT_EQ(out.size(), 84u);
@@ -334,7 +301,7 @@ TEST(Dmat, BadPairsLeaveOutputUntouched)
   const std::string b2 = "1 2\n3\n5\n";
   const std::string bc2 = "3 2\n1\n4\n0\n0\n0\n1\n";  // rows (1 0 0) and (4 0 1)
   {
-    auto out = sentinel(tm);
+    auto out = sentinel_constraints(tm);
     std::istringstream b(b2), bc(bc2);
     ASSERT_EQ(PIO::read_dmat_constraints(b, bc, tm, out), Error_code::SUCCESS);
     ASSERT_EQ(out.size(), 2u);
@@ -388,28 +355,28 @@ TEST(Dmat, BadPairsLeaveOutputUntouched)
   };
   for(const auto& c : cases)
   {
-    auto out = sentinel(tm);
+    auto out = sentinel_constraints(tm);
     std::istringstream b(std::get<0>(c)), bc(std::get<1>(c));
     EXPECT_EQ(PIO::read_dmat_constraints(b, bc, tm, out), std::get<2>(c)) << std::get<0>(c) << "|" << std::get<1>(c);
-    EXPECT_TRUE(is_sentinel(out));
+    EXPECT_TRUE(is_sentinel(tm, out));
   }
 
   // An empty pair is an empty list.
   {
-    auto out = sentinel(tm);
+    auto out = sentinel_constraints(tm);
     std::istringstream b("1 0\n"), bc("6 0\n");
     ASSERT_EQ(PIO::read_dmat_constraints(b, bc, tm, out), Error_code::SUCCESS);
     EXPECT_TRUE(out.empty());
   }
   // Missing files, and the real files against a mesh with fewer faces.
-  auto out = sentinel(tm);
+  auto out = sentinel_constraints(tm);
   EXPECT_EQ(PIO::read_dmat_constraints(data_file("no_such_b.dmat"), data_file("inspired_mesh_bc.dmat"), tm, out),
             Error_code::CANNOT_OPEN_FILE);
   EXPECT_EQ(PIO::read_dmat_constraints(data_file("inspired_mesh_b.dmat"), data_file("no_such_bc.dmat"), tm, out),
             Error_code::CANNOT_OPEN_FILE);
   EXPECT_EQ(PIO::read_dmat_constraints(data_file("inspired_mesh_b.dmat"), data_file("inspired_mesh_bc.dmat"), tm, out),
             Error_code::INVALID_FACE);  // ids up to 4259 on a mesh of 2496 faces
-  EXPECT_TRUE(is_sentinel(out));
+  EXPECT_TRUE(is_sentinel(tm, out));
 }
 
 TEST(Dmat, GeomTraitsNamedParameter)

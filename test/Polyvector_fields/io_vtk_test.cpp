@@ -32,26 +32,12 @@
 #include <string>
 #include <vector>
 
-#ifndef PVF_DATA_DIR
-#error "PVF_DATA_DIR (the folder of the bundled meshes) must be given by the build (CMake's pvf_link_package)"
-#endif
-
 #include "io_test_support.h"
 
 namespace {
 
 using namespace pvf_io_test;
-
-namespace PVF = CGAL::Polyvector_fields;
 namespace PIO = CGAL::Polyvector_fields::IO;
-namespace fs = std::filesystem;
-using PVF::Error_code;
-
-typedef CGAL::Simple_cartesian<double> SC;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
-
-
-
 
 // ---------------------------------------------------------------------------
 // A minimal reader of legacy ASCII VTK unstructured grids with cell data.

@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>
 
 #include "test_meshes.h"
+#include "test_support.h"
 
 #include <CGAL/Polyvector_fields/IO/rawfield.h>
 #include <CGAL/Polyvector_fields/IO/singularities.h>
@@ -102,18 +103,6 @@ std::vector<PVF::Face_constraint<Om_face, Om_vector> > on_open_mesh(const Constr
   return result;
 }
 
-double difference(const std::vector<Complex>& a, const std::vector<Complex>& b)
-{
-  EXPECT_EQ(a.size(), b.size());
-  double d = 0, scale = 0;
-  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    d = (std::max)(d, std::abs(a[i] - b[i]));
-    scale = (std::max)(scale, std::abs(a[i]));
-  }
-  return d / (std::max)(scale, 1e-300);
-}
-
 // A field as a flat array in face order, from a map keyed by faces.
 template <typename Key>
 std::vector<Complex> flat(const std::map<Key, std::vector<Complex> >& map, const std::vector<Key>& faces)
@@ -153,7 +142,7 @@ TEST(OpenMesh, DesignRootsSingularitiesAndEnergy)
     ASSERT_EQ(PVF::design_polyvector_field(tm, N, constraints, boost::make_assoc_property_map(cs), np), PVF::Error_code::SUCCESS);
     ASSERT_EQ(PVF::design_polyvector_field(om, N, on_open_mesh(constraints, om), boost::make_assoc_property_map(co), np),
               PVF::Error_code::SUCCESS);
-    EXPECT_LT(difference(flat(cs, sf), flat(co, of)), 1e-12) << "N = " << N;
+    EXPECT_LT(relative_difference(flat(cs, sf), flat(co, of)), 1e-12) << "N = " << N;
 
     std::map<Face, std::vector<Vector> > rs;
     std::map<Om_face, std::vector<Om_vector> > ro;
@@ -256,13 +245,13 @@ TEST(OpenMesh, CurvatureAndFrameFields)
   ASSERT_EQ(PVF::design_angle_bounded_frame_field(tm, cs, boost::make_assoc_property_map(as), ras), PVF::Error_code::SUCCESS);
   ASSERT_EQ(PVF::design_angle_bounded_frame_field(om, co, boost::make_assoc_property_map(ao), rao), PVF::Error_code::SUCCESS);
   EXPECT_EQ(ras.iterations, rao.iterations);
-  EXPECT_LT(difference(flat(as, sf), flat(ao, of)), 1e-12);
+  EXPECT_LT(relative_difference(flat(as, sf), flat(ao, of)), 1e-12);
   const auto ns = PVF::parameters::principal_curvature_map(boost::make_assoc_property_map(ks));
   const auto no = PVF::parameters::principal_curvature_map(boost::make_assoc_property_map(ko));
   ASSERT_EQ(PVF::design_conjugate_frame_field(tm, cs, boost::make_assoc_property_map(js), rjs, ns), PVF::Error_code::SUCCESS);
   ASSERT_EQ(PVF::design_conjugate_frame_field(om, co, boost::make_assoc_property_map(jo), rjo, no), PVF::Error_code::SUCCESS);
   EXPECT_EQ(rjs.iterations, rjo.iterations);
-  EXPECT_LT(difference(flat(js, sf), flat(jo, of)), 1e-12);
+  EXPECT_LT(relative_difference(flat(js, sf), flat(jo, of)), 1e-12);
 
   std::map<Face, double> angle_s, dev_s;
   std::map<Om_face, double> angle_o, dev_o;
@@ -295,5 +284,5 @@ TEST(OpenMesh, DesignerOnATangentBundle)
   ASSERT_EQ(designer.add_constraints(on_open_mesh(constraints, om)), PVF::Error_code::SUCCESS);
   ASSERT_EQ(reference.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
   ASSERT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
-  EXPECT_LT(difference(reference.coefficient_array(), designer.coefficient_array()), 1e-12);
+  EXPECT_LT(relative_difference(reference.coefficient_array(), designer.coefficient_array()), 1e-12);
 }

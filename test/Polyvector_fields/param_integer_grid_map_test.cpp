@@ -431,14 +431,11 @@ TEST(IgmInvariance, RigidMotion)
 
   const Rigid_motion motion(12);
   Mesh moved = c->tm;
-  for(Vertex v : vertices(moved))
-    moved.point(v) = motion(moved.point(v));
+  motion.move(moved);
   std::vector<Constraint> constraints;
   ASSERT_EQ(PVF::IO::read_dmat_constraints(data("inspired_mesh_b.dmat"), data("inspired_mesh_bc.dmat"), moved, constraints),
             PVF::Error_code::SUCCESS);
-  for(Constraint& k : constraints)
-    for(Vector& x : k.vectors)
-      x = motion(x);
+  motion.move(constraints);
   auto field = moved.add_property_map<Face, std::vector<Complex> >("f:moved_field").first;
   ASSERT_EQ(PVF::design_polyvector_field(moved, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
             PVF::Error_code::SUCCESS);

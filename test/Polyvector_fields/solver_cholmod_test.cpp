@@ -34,6 +34,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #if defined(__unix__) || defined(__APPLE__)
 #  include <dlfcn.h>
 #endif
@@ -58,6 +60,8 @@ typedef CGAL::Surface_mesh<Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 typedef PVF::Face_constraint<face_descriptor, Vector_3> Constraint;
 typedef std::complex<double> Complex;
+using pvf_test::designed_coefficients;
+using pvf_test::relative_difference;
 
 // A dense model of SparseLinearAlgebraWithFactorTraits_d on complex numbers:
 // the whole matrix is stored and factored by Eigen's dense LDLT (Hermitian,
@@ -160,30 +164,6 @@ std::vector<Constraint> constraints_for(const Mesh& tm, std::size_t N, bool sign
   return constraints;
 }
 
-template <typename Solver>
-std::vector<Complex> design(const Mesh& tm, std::size_t N, bool sign_symmetric, const std::vector<Constraint>& constraints)
-{
-  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver> designer(
-    tm, N, PVF::parameters::sign_symmetric(sign_symmetric));
-  EXPECT_EQ(designer.status(), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(designer.add_constraints(constraints), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
-  return designer.coefficient_array();
-}
-
-// max |a - b| / max |a|
-double relative_difference(const std::vector<Complex>& a, const std::vector<Complex>& b)
-{
-  EXPECT_EQ(a.size(), b.size());
-  double diff = 0, size = 0;
-  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    diff = (std::max)(diff, std::abs(a[i] - b[i]));
-    size = (std::max)(size, std::abs(a[i]));
-  }
-  return size > 0 ? diff / size : diff;
-}
-
 struct Case
 {
   const char* name;
@@ -207,8 +187,8 @@ TEST(SolverAgreement, SimplicialLDLTMatchesDenseLDLT)
     SCOPED_TRACE(c.name);
     const Mesh tm = c.closed ? closed_mesh() : open_mesh();
     const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
-    const auto dense = design<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
-    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto dense = designed_coefficients<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = designed_coefficients<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
     ASSERT_EQ(dense.size(), tm.number_of_faces() * c.N);
     EXPECT_LT(relative_difference(dense, ldlt), 1e-10);
     // The field is not trivial: a zero field would agree with anything.
@@ -229,9 +209,9 @@ TEST(SolverAgreement, CholmodMatchesSimplicialLDLTAndDense)
     SCOPED_TRACE(c.name);
     const Mesh tm = c.closed ? closed_mesh() : open_mesh();
     const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
-    const auto dense = design<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
-    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
-    const auto cholmod = design<PVF::Cholmod_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto dense = designed_coefficients<Dense_LDLT_traits>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = designed_coefficients<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto cholmod = designed_coefficients<PVF::Cholmod_sparse_solver>(tm, c.N, c.sign_symmetric, constraints);
     EXPECT_LT(relative_difference(dense, cholmod), 1e-10);
     EXPECT_LT(relative_difference(ldlt, cholmod), 1e-10);
   }
@@ -371,17 +351,6 @@ PVF::Amg_sparse_solver small_amg(int reuse = 2, bool warm_start = true, int max_
   return amg;
 }
 
-template <typename Solver, typename ConcurrencyTag = CGAL::Sequential_tag>
-std::vector<Complex> design_with(const Mesh& tm, std::size_t N, bool sign_symmetric,
-                                 const std::vector<Constraint>& constraints, const Solver& solver)
-{
-  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver, ConcurrencyTag> designer(
-    tm, N, PVF::parameters::sign_symmetric(sign_symmetric, CGAL::parameters::sparse_linear_solver(solver)));
-  EXPECT_EQ(designer.add_constraints(constraints), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
-  return designer.coefficient_array();
-}
-
 // Every case: decoupled degrees, partial constraints (one coupled block of
 // two unknowns per free face, the null-space parametrisation), N = 3 and 6.
 TEST(SolverAgreement, AmgMatchesSimplicialLDLT)
@@ -391,9 +360,9 @@ TEST(SolverAgreement, AmgMatchesSimplicialLDLT)
     SCOPED_TRACE(c.name);
     const Mesh tm = c.closed ? closed_mesh() : open_mesh();
     const auto constraints = constraints_for(tm, c.N, c.sign_symmetric, c.count, c.partial);
-    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
+    const auto ldlt = designed_coefficients<PVF::Simplicial_ldlt_solver>(tm, c.N, c.sign_symmetric, constraints);
     const PVF::Amg_sparse_solver amg = small_amg();
-    const auto a = design_with(tm, c.N, c.sign_symmetric, constraints, amg);
+    const auto a = designed_coefficients<PVF::Amg_sparse_solver, CGAL::Sequential_tag>(tm, c.N, c.sign_symmetric, constraints, &amg);
     EXPECT_LT(relative_difference(ldlt, a), 1e-8);
     const PVF::Amg_statistics s = amg.statistics();
     EXPECT_GE(s.level_sizes.size(), 3u);  // real multigrid, not the dense coarsest level alone
@@ -420,9 +389,9 @@ TEST(SolverAgreement, AmgDefaultsOnTenThousandFaces)
   const auto full = constraints_for(tm, 4, true, 100);
   for(const auto* set : { &full, &constraints })
   {
-    const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, 4, true, *set);
+    const auto ldlt = designed_coefficients<PVF::Simplicial_ldlt_solver>(tm, 4, true, *set);
     const PVF::Amg_sparse_solver amg;
-    const auto sequential = design_with(tm, 4, true, *set, amg);
+    const auto sequential = designed_coefficients<PVF::Amg_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, *set, &amg);
     EXPECT_LT(relative_difference(ldlt, sequential), 1e-8);
     const PVF::Amg_statistics s = amg.statistics();
     EXPECT_GE(s.level_sizes.size(), 2u);
@@ -431,7 +400,7 @@ TEST(SolverAgreement, AmgDefaultsOnTenThousandFaces)
     EXPECT_LE(s.max_iterations, 30u);
     EXPECT_EQ(s.fallbacks, 0u);
 #ifdef CGAL_LINKED_WITH_TBB
-    const auto parallel = design_with<PVF::Amg_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, *set, amg);
+    const auto parallel = designed_coefficients<PVF::Amg_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, *set, &amg);
     ASSERT_EQ(parallel.size(), sequential.size());
     EXPECT_EQ(std::memcmp(parallel.data(), sequential.data(), parallel.size() * sizeof(Complex)), 0);
 #endif
@@ -480,9 +449,9 @@ TEST(SolverAgreement, AmgFallsBackToDirectSolverAndSaysSo)
 {
   const Mesh tm = closed_mesh();
   const auto constraints = constraints_for(tm, 4, true, 12);
-  const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, 4, true, constraints);
+  const auto ldlt = designed_coefficients<PVF::Simplicial_ldlt_solver>(tm, 4, true, constraints);
   const PVF::Amg_sparse_solver amg = small_amg(2, true, 1);
-  const auto a = design_with(tm, 4, true, constraints, amg);
+  const auto a = designed_coefficients<PVF::Amg_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, constraints, &amg);
   EXPECT_LT(relative_difference(ldlt, a), 1e-10);
   const PVF::Amg_statistics s = amg.statistics();
   EXPECT_EQ(s.solves, 2u);  // the two degrees of a frame field
@@ -541,15 +510,15 @@ TEST(SolverAgreement, AdaptiveSolverPicksBySize)
   typedef PVF::Adaptive_sparse_solver<PVF::Simplicial_ldlt_solver> Adaptive;
   const Mesh tm = closed_mesh();
   const auto constraints = constraints_for(tm, 4, true, 12);
-  const auto ldlt = design<PVF::Simplicial_ldlt_solver>(tm, 4, true, constraints);
+  const auto ldlt = designed_coefficients<PVF::Simplicial_ldlt_solver>(tm, 4, true, constraints);
   const std::size_t unknowns = tm.number_of_faces() - 8;  // the 8 hard constraints fix their faces
   const Adaptive direct(unknowns + 1, PVF::Simplicial_ldlt_solver(), small_amg());
-  const auto below = design_with(tm, 4, true, constraints, direct);
+  const auto below = designed_coefficients<Adaptive, CGAL::Sequential_tag>(tm, 4, true, constraints, &direct);
   ASSERT_EQ(below.size(), ldlt.size());
   EXPECT_EQ(std::memcmp(below.data(), ldlt.data(), ldlt.size() * sizeof(Complex)), 0);
   EXPECT_EQ(direct.amg_solver().statistics().solves, 0u);
   const Adaptive amg(unknowns, PVF::Simplicial_ldlt_solver(), small_amg());
-  const auto above = design_with(tm, 4, true, constraints, amg);
+  const auto above = designed_coefficients<Adaptive, CGAL::Sequential_tag>(tm, 4, true, constraints, &amg);
   EXPECT_LT(relative_difference(ldlt, above), 1e-8);
   EXPECT_GT(relative_difference(ldlt, above), 0.0);  // a different computation
   EXPECT_EQ(amg.amg_solver().statistics().solves, 2u);

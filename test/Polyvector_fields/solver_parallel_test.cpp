@@ -23,6 +23,7 @@
 #include <CGAL/subdivision_method_3.h>
 
 #include "test_meshes.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -67,19 +68,6 @@ std::vector<Constraint> frame_constraints(const Mesh& tm)
   return constraints;
 }
 
-template <typename Solver, typename ConcurrencyTag>
-std::vector<Complex> design(const Mesh& tm, std::size_t N, bool sign_symmetric, const std::vector<Constraint>& constraints,
-                            std::size_t* degrees = nullptr)
-{
-  PVF::Polyvector_field_designer<Mesh, CGAL::Default, CGAL::Default, Solver, ConcurrencyTag> designer(
-    tm, N, PVF::parameters::sign_symmetric(sign_symmetric));
-  EXPECT_EQ(designer.add_constraints(constraints), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(designer.solve(boost::dummy_property_map()), PVF::Error_code::SUCCESS);
-  if(degrees)
-    *degrees = designer.statistics().number_of_degrees_solved;
-  return designer.coefficient_array();
-}
-
 // Exact equality of every bit (also of the sign of zeros), and a field that is not zero.
 void expect_bit_identical(const std::vector<Complex>& a, const std::vector<Complex>& b)
 {
@@ -100,14 +88,14 @@ void check_design(const char* solver_name)
   const std::vector<Constraint> frames = frame_constraints(tm);
   // Frame field: two independent degrees, solved in parallel.
   std::size_t degrees = 0;
-  const auto sequential = design<Solver, CGAL::Sequential_tag>(tm, 4, true, frames, &degrees);
-  const auto parallel = design<Solver, CGAL::Parallel_tag>(tm, 4, true, frames);
+  const auto sequential = designed_coefficients<Solver, CGAL::Sequential_tag>(tm, 4, true, frames, nullptr, &degrees);
+  const auto parallel = designed_coefficients<Solver, CGAL::Parallel_tag>(tm, 4, true, frames);
   EXPECT_EQ(degrees, 2u);
   expect_bit_identical(sequential, parallel);
   // N = 3 from three vectors per face: three degrees.
   const std::vector<Constraint> triples = random_constraints(tm, 60, 3, 8);
-  const auto sequential3 = design<Solver, CGAL::Sequential_tag>(tm, 3, false, triples, &degrees);
-  const auto parallel3 = design<Solver, CGAL::Parallel_tag>(tm, 3, false, triples);
+  const auto sequential3 = designed_coefficients<Solver, CGAL::Sequential_tag>(tm, 3, false, triples, nullptr, &degrees);
+  const auto parallel3 = designed_coefficients<Solver, CGAL::Parallel_tag>(tm, 3, false, triples);
   EXPECT_EQ(degrees, 3u);
   expect_bit_identical(sequential3, parallel3);
 }
@@ -228,7 +216,7 @@ TEST(Parallel, OpenBlasThreadCountIsRestored)
   if(reinterpret_cast<Get_threads>(get)() != 2)
     GTEST_SKIP() << "OpenBLAS does not allow 2 threads here";
   const Mesh& tm = bumpy_10k();
-  design<PVF::Cholmod_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, frame_constraints(tm));
+  designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, frame_constraints(tm));
   EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), 2);
   reinterpret_cast<Set_threads>(set)(original);
 #  else
@@ -244,8 +232,8 @@ TEST(Parallel, ConcurrentCholmodDesignsInTwoThreads)
   const Mesh& tm = bumpy_10k();
   const std::vector<Constraint> frames = frame_constraints(tm);
   const std::vector<Constraint> others = random_constraints(tm, num_faces(tm) / 50, 2, 9);
-  const auto alone_a = design<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, frames);
-  const auto alone_b = design<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others);
+  const auto alone_a = designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, frames);
+  const auto alone_b = designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others);
 #  if defined(__unix__) || defined(__APPLE__)
   typedef int (*Get_threads)();
   void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
@@ -254,8 +242,8 @@ TEST(Parallel, ConcurrentCholmodDesignsInTwoThreads)
   for(int round = 0; round < 3; ++round)
   {
     std::vector<Complex> a, b;
-    std::thread first([&] { a = design<PVF::Cholmod_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, frames); });
-    std::thread second([&] { b = design<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others); });
+    std::thread first([&] { a = designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, frames); });
+    std::thread second([&] { b = designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others); });
     first.join();
     second.join();
     expect_bit_identical(alone_a, a);

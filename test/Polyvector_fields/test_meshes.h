@@ -251,6 +251,23 @@ struct Rigid_motion
                   R[6] * v.x() + R[7] * v.y() + R[8] * v.z());
   }
   Point operator()(const Point& p) const { return CGAL::ORIGIN + (*this)(p - CGAL::ORIGIN) + t; }
+
+  // Moves every point of a mesh.
+  template <typename TriangleMesh>
+  void move(TriangleMesh& tm) const
+  {
+    for(auto v : vertices(tm))
+      tm.point(v) = (*this)(tm.point(v));
+  }
+
+  // Turns every vector of the constraints (faces and weights stay).
+  template <typename FaceDescriptor>
+  void move(std::vector<CGAL::Polyvector_fields::Face_constraint<FaceDescriptor, Vector> >& constraints) const
+  {
+    for(auto& c : constraints)
+      for(Vector& v : c.vectors)
+        v = (*this)(v);
+  }
 };
 
 inline Vector random_vector(std::mt19937& rng)

@@ -18,9 +18,7 @@
 // vectors, hard); and write_constraints() writes it back so that it reads the
 // same, bit for bit.
 
-#include "fuzz_support.h"
-
-#include <CGAL/Polyvector_fields/IO/constraints.h>
+#include "constraints_harness.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -31,26 +29,15 @@ namespace pvf_fuzz_constraints {
 
 using namespace pvf_fuzz;
 
-typedef PVF::Face_constraint<Face, Vector> Constraint;
 typedef PVF::Face_constraint<std::size_t, Vector> Id_constraint;
 
-inline std::vector<Constraint> sentinel(const Mesh& tm)
-{
-  return { Constraint{ *faces(tm).begin(), { Vector(42, -4.5, 0.125) }, 3.0 } };
-}
-
-struct Read
-{
-  Error_code code;
-  std::string message;
-  std::vector<Constraint> out;
-};
+typedef Constraints_read Read;
 
 // Reads `text` without expected_degree (N = 0) or with expected_degree(N).
 inline Read read(const std::string& text, const Mesh& tm, std::size_t N)
 {
   Read r;
-  r.out = sentinel(tm);
+  r.out = sentinel_constraints(tm);
   std::istringstream is(text);
   r.code = N == 0 ? PIO::read_constraints(is, tm, r.out, PVF::parameters::error_message(r.message))
                   : PIO::read_constraints(is, tm, r.out,
@@ -58,68 +45,9 @@ inline Read read(const std::string& text, const Mesh& tm, std::size_t N)
   if(r.code != Error_code::SUCCESS)
   {
     check_failure_reported(r.code, r.message, "read_constraints");
-    PVF_FUZZ_CHECK(same_constraints(r.out, sentinel(tm)), "a failed read changed `out`");
+    PVF_FUZZ_CHECK(is_sentinel(tm, r.out), "a failed read changed `out`");
   }
   return r;
-}
-
-// What a successful read must hold; returns the largest number of vectors of a face.
-inline std::size_t check_valid(const std::vector<Constraint>& constraints, const Mesh& tm)
-{
-  std::set<Face> seen;
-  std::size_t most = 0;
-  for(const Constraint& c : constraints)
-  {
-    PVF_FUZZ_CHECK(tm.is_valid(c.face) && !tm.is_removed(c.face), "a constraint names a face not in the mesh");
-    PVF_FUZZ_CHECK(seen.insert(c.face).second, "face " + std::to_string(std::size_t(c.face)) + " is constrained twice");
-    PVF_FUZZ_CHECK(!c.vectors.empty(), "a constraint has no vector");
-    PVF_FUZZ_CHECK(std::isinf(c.weight) && c.weight > 0, "a constraint read from a file is not hard");
-    for(const Vector& v : c.vectors)
-      PVF_FUZZ_CHECK(finite(v), "a non-finite vector " + vector_text(v) + " was read");
-    most = (std::max)(most, c.vectors.size());
-  }
-  return most;
-}
-
-// Writes `constraints` with write_constraints() and reads them back.
-inline void check_round_trip(const std::vector<Constraint>& constraints, const Mesh& tm, const std::string& what)
-{
-  std::ostringstream os;
-  const Error_code written = PIO::write_constraints(os, tm, constraints);
-  PVF_FUZZ_CHECK(written == Error_code::SUCCESS, what + ": write_constraints() failed with " + code_name(written));
-  std::string message;
-  std::vector<Constraint> back;
-  std::istringstream is(os.str());
-  const Error_code code = PIO::read_constraints(is, tm, back, PVF::parameters::error_message(message));
-  PVF_FUZZ_CHECK(code == Error_code::SUCCESS, what + ": what write_constraints() wrote does not read back: " +
-                                               code_name(code) + ": " + message + "\n" + os.str());
-  PVF_FUZZ_CHECK(same_constraints(back, constraints), what + ": the constraints do not read back the same:\n" + os.str());
-}
-
-// With expected_degree(N): the same outcome, except a refusal at a face with more than N vectors.
-inline void check_with_degree(const Read& plain, const Read& with_N, std::size_t N, std::size_t most)
-{
-  const std::string what = "expected_degree(" + std::to_string(N) + ")";
-  if(plain.code == Error_code::SUCCESS)
-  {
-    if(N >= most)
-    {
-      PVF_FUZZ_CHECK(with_N.code == Error_code::SUCCESS, what + " refuses what is read without it: " +
-                                                           code_name(with_N.code) + ": " + with_N.message);
-      PVF_FUZZ_CHECK(same_constraints(with_N.out, plain.out), what + " reads other constraints");
-    }
-    else
-      PVF_FUZZ_CHECK(with_N.code == Error_code::TOO_MANY_CONSTRAINT_VECTORS,
-                     what + " accepts a face with " + std::to_string(most) + " vectors: " + code_name(with_N.code));
-  }
-  else
-  {
-    PVF_FUZZ_CHECK(with_N.code != Error_code::SUCCESS, what + " accepts what is refused without it");
-    if(with_N.code != Error_code::TOO_MANY_CONSTRAINT_VECTORS)
-      PVF_FUZZ_CHECK(with_N.code == plain.code && with_N.message == plain.message,
-                     what + " fails otherwise: " + code_name(with_N.code) + " '" + with_N.message + "' against " +
-                       code_name(plain.code) + " '" + plain.message + "'");
-  }
 }
 
 inline void run(const std::string& text)
@@ -129,8 +57,8 @@ inline void run(const std::string& text)
   std::size_t most = 0;
   if(plain.code == Error_code::SUCCESS)
   {
-    most = check_valid(plain.out, tm);
-    check_round_trip(plain.out, tm, "read_constraints");
+    most = check_valid_constraints(plain.out, tm);
+    check_constraints_round_trip(plain.out, tm, "read_constraints");
   }
 
   std::vector<std::size_t> degrees = { 1, 2, 4, 32 };
@@ -139,7 +67,7 @@ inline void run(const std::string& text)
   if(most > 0)
     degrees.push_back(most);
   for(std::size_t N : degrees)
-    check_with_degree(plain, read(text, tm, N), N, most);
+    check_constraints_with_degree(plain, read(text, tm, N), N, most);
 
   // The file overload, on ids: the same outcome.
   write_scratch_file(text);

@@ -26,34 +26,20 @@ using namespace pvf_fuzz;
 
 typedef Mesh::Property_map<Face, std::vector<Vector> > Root_map;
 
-const std::size_t sentinel_N = 12345;
-
-inline std::vector<Vector> sentinel_roots(Face f) { return { Vector(double(std::size_t(f)), -1, 99) }; }
-
 struct Field
 {
   Mesh tm = tetrahedron();
   Root_map roots = tm.add_property_map<Face, std::vector<Vector> >("f:fuzz_roots").first;
 
-  void reset()
-  {
-    for(Face f : faces(tm))
-      roots[f] = sentinel_roots(f);
-  }
-  bool untouched() const
-  {
-    for(Face f : faces(tm))
-      if(!same_vectors(roots[f], sentinel_roots(f)))
-        return false;
-    return true;
-  }
+  void reset() { fill_sentinel_roots(tm, roots); }
+  bool untouched() const { return has_sentinel_roots(tm, roots); }
 };
 
 // Reads `text` into `field` without (expected = 0) or with expected_degree(expected).
 inline Error_code read(const std::string& text, Field& field, std::size_t expected, std::size_t& N, std::string& message)
 {
   field.reset();
-  N = sentinel_N;
+  N = sentinel_degree;
   message.clear();
   std::istringstream is(text);
   const Error_code code =
@@ -64,7 +50,7 @@ inline Error_code read(const std::string& text, Field& field, std::size_t expect
   {
     check_failure_reported(code, message, "read_rawfield");
     PVF_FUZZ_CHECK(field.untouched(), "a failed read_rawfield changed the root map");
-    PVF_FUZZ_CHECK(N == sentinel_N, "a failed read_rawfield changed N");
+    PVF_FUZZ_CHECK(N == sentinel_degree, "a failed read_rawfield changed N");
   }
   return code;
 }

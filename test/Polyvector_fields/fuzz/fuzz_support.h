@@ -12,6 +12,8 @@
 #define CGAL_POLYVECTOR_FIELDS_TEST_FUZZ_SUPPORT_H
 
 #include "fuzz_target.h"
+#include "../io_test_support.h"
+#include "../test_meshes.h"
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
@@ -118,32 +120,15 @@ inline const Mesh& tetrahedron()
   return tm;
 }
 
-// A rows x cols grid of unit squares, each split into two triangles, in z = 0,
-// with the diagonals alternating (an open disk: 2 * rows * cols faces).
-inline Mesh grid(int rows, int cols)
-{
-  Mesh m;
-  std::vector<Vertex> v;
-  for(int i = 0; i <= rows; ++i)
-    for(int j = 0; j <= cols; ++j)
-      v.push_back(m.add_vertex(Point(j, i, 0)));
-  auto id = [cols](int i, int j) { return std::size_t(i * (cols + 1) + j); };
-  for(int i = 0; i < rows; ++i)
-    for(int j = 0; j < cols; ++j)
-    {
-      if((i + j) % 2 == 0)
-      {
-        m.add_face(v[id(i, j)], v[id(i, j + 1)], v[id(i + 1, j + 1)]);
-        m.add_face(v[id(i, j)], v[id(i + 1, j + 1)], v[id(i + 1, j)]);
-      }
-      else
-      {
-        m.add_face(v[id(i, j)], v[id(i, j + 1)], v[id(i + 1, j)]);
-        m.add_face(v[id(i, j + 1)], v[id(i + 1, j + 1)], v[id(i + 1, j)]);
-      }
-    }
-  return m;
-}
+// The tests' meshes (test_meshes.h; Mesh is the same type) and the sentinels
+// of the readers (io_test_support.h).
+using pvf_test::grid;
+using pvf_io_test::sentinel_degree;
+using pvf_io_test::sentinel_constraints;
+using pvf_io_test::sentinel_singularities;
+using pvf_io_test::is_sentinel;
+using pvf_io_test::fill_sentinel_roots;
+using pvf_io_test::has_sentinel_roots;
 
 // A scratch file of this process, for the readers that take a file name.
 inline const std::string& scratch_file()

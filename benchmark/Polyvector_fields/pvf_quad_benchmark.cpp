@@ -18,7 +18,7 @@
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/design_polyvector_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
@@ -63,7 +63,7 @@ void BM_planar_quads(benchmark::State& state)
   double t_field = 0, t_map = 0, t_extraction = 0, t_planarity = 0, t_planarization = 0;
   PVF::Integer_grid_map_result map_result;
   PVF::Quad_extraction_result extraction;
-  PVF::Planarity_statistics before, after;
+  PVF::Planarity_result before, after;
   PVF::Planarization_result planarization;
   for(auto _ : state)
   {

@@ -89,7 +89,7 @@ def times(report):
 
 
 # ---------------------------------------------------------------------------
-# Legacy VTK (ASCII UNSTRUCTURED_GRID) as written by IO::write_vtk()
+# Legacy VTK (ASCII UNSTRUCTURED_GRID) as written by IO::write_VTK()
 # ---------------------------------------------------------------------------
 
 
@@ -579,7 +579,7 @@ def pair(fields, titles, name, azimuth, elevation, array, cmap, vmin, vmax, labe
 def frames_figure(field, name):
     """A close view of a patch of faces: each face's frame (e1, e2) and the field's vectors.
 
-    The frames come from the file: write_vtk() lists the corners of face f as
+    The frames come from the file: write_VTK() lists the corners of face f as
     source(h), target(h), target(next(h)) with h = halfedge(f), so e1 is the
     direction of the first corner to the second, as in Face_frame.
     """

@@ -44,7 +44,7 @@ int main(int argc, char** argv)
   const std::string filename = argc > 1 ? argv[1] : std::string(PVF_DATA_DIR) + "/lilium.obj";
   const std::string folder = argc > 2 ? argv[2] : ".";
   Mesh mesh;
-  PVF::IO::Mesh_repair_report report;
+  PVF::IO::Mesh_repair_result report;
   std::string message;
   if(PVF::IO::read_triangle_mesh(filename, mesh, report, PVF::parameters::error_message(message)) !=
      PVF::Error_code::SUCCESS)
@@ -74,7 +74,7 @@ int main(int argc, char** argv)
      PVF::compute_singularities(mesh, 3, coefficients, std::back_inserter(singularities)) != PVF::Error_code::SUCCESS ||
      PVF::IO::write_rawfield(folder + "/field.rawfield", mesh, roots, 3) != PVF::Error_code::SUCCESS ||
      PVF::IO::write_singularities(folder + "/field.sings", mesh, 3, singularities) != PVF::Error_code::SUCCESS ||
-     PVF::IO::write_vtk(folder + "/field.vtk", mesh, roots, 3, singularities) != PVF::Error_code::SUCCESS)
+     PVF::IO::write_VTK(folder + "/field.vtk", mesh, roots, 3, singularities) != PVF::Error_code::SUCCESS)
   {
     std::cerr << "cannot design or write the field" << std::endl;
     return EXIT_FAILURE;

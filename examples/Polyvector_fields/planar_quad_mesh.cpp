@@ -23,7 +23,7 @@
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
 #include <CGAL/Polyvector_fields/comb_frame_field.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
 #include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
@@ -128,7 +128,7 @@ int main(int argc, char** argv)
   // 5. Planarity (distance between the diagonals over their mean length), then planarization to 1%,
   //    close to the input surface.
   auto planarity = quads.add_property_map<Face, double>("f:planarity").first;
-  PVF::Planarity_statistics before;
+  PVF::Planarity_result before;
   code = PVF::quad_planarity(quads, planarity, before);
   PVF::Planarization_result planarization;
   if(code == PVF::Error_code::SUCCESS)

@@ -13,10 +13,10 @@
 
 #include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
-#include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/design_angle_bounded_frame_field.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/frame_field_measures.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/Local_global_optimizer.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>

@@ -15,9 +15,9 @@
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
-#include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/design_angle_bounded_frame_field.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/design_polyvector_field.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 

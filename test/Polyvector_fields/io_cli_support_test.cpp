@@ -265,7 +265,7 @@ TEST(CliSupportRepairedConstraints, TriangulatedFacesPassTheirConstraint)
   std::ofstream(file) << "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
                          "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
   Mesh tm;
-  PVF::IO::Mesh_repair_report report;
+  PVF::IO::Mesh_repair_result report;
   ASSERT_EQ(PVF::IO::read_triangle_mesh(file, tm, report), PVF::Error_code::SUCCESS);
   ASSERT_EQ(num_faces(tm), 12u);
   ASSERT_EQ(report.file_faces, 6u);
@@ -297,7 +297,7 @@ TEST(CliSupportRepairedConstraints, RemovedFacesAndForeignReports)
   // Face 2 repeats face 0 (rotated): the repair removes it.
   std::ofstream(file) << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n3 2 0 1\n";
   Mesh tm;
-  PVF::IO::Mesh_repair_report report;
+  PVF::IO::Mesh_repair_result report;
   ASSERT_EQ(PVF::IO::read_triangle_mesh(file, tm, report), PVF::Error_code::SUCCESS);
   ASSERT_EQ(report.duplicate_faces, 1u);
   ASSERT_EQ(num_faces(tm), 2u);
@@ -313,7 +313,7 @@ TEST(CliSupportRepairedConstraints, RemovedFacesAndForeignReports)
             PVF::Error_code::INVALID_FACE);
   EXPECT_EQ(failed, 0u);
   // A report of another mesh.
-  PVF::IO::Mesh_repair_report other = report;
+  PVF::IO::Mesh_repair_result other = report;
   other.source_face.push_back(0);
   EXPECT_EQ(PVF::IO::map_constraints_to_repaired_mesh(tm, other, std::vector<Id_constraint>(), carried),
             PVF::Error_code::INVALID_PARAMETER);

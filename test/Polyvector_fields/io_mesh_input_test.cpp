@@ -45,7 +45,7 @@ struct Read
 {
   PVF::Error_code code;
   std::string message;
-  PVF::IO::Mesh_repair_report report;
+  PVF::IO::Mesh_repair_result report;
   std::size_t faces = 0;
 };
 
@@ -202,7 +202,7 @@ TEST(MeshInput, SurfaceMeshAndPolyhedronAgree)
   for(const char* name : { "bumpy.off", "inspired_mesh.obj", "fandisk.off" })
   {
     Mesh tm;
-    PVF::IO::Mesh_repair_report report;
+    PVF::IO::Mesh_repair_result report;
     ASSERT_EQ(PVF::IO::read_triangle_mesh(pvf_io_test::data_file(name), tm, report, PVF::parameters::repair(false)),
               PVF::Error_code::SUCCESS)
       << name;

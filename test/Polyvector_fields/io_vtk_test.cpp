@@ -234,7 +234,7 @@ TYPED_TEST(Vtk_test, ParsesBackOnBumpy)
 
   Scratch_directory dir("vtk");
   const std::string filename = dir.file("bumpy.vtk");
-  ASSERT_EQ(PIO::write_vtk(filename, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(constrained))), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_VTK(filename, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(constrained))), Error_code::SUCCESS);
   EXPECT_EQ(dir.entries(), std::set<std::string>{ "bumpy.vtk" });
   const std::string text = file_content(filename);
 
@@ -326,13 +326,13 @@ TYPED_TEST(Vtk_test, ParsesBackOnBumpy)
 
   // The flag overload and the stream overload write the same text.
   std::ostringstream os;
-  ASSERT_EQ(PIO::write_vtk(os, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars, PVF::parameters::is_constrained(flags))), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_VTK(os, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars, PVF::parameters::is_constrained(flags))), Error_code::SUCCESS);
   EXPECT_EQ(os.str(), text);
 
   // Without constraints, without extra arrays.
   std::ostringstream no_constraints, bare;
-  ASSERT_EQ(PIO::write_vtk(no_constraints, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars)), Error_code::SUCCESS);
-  ASSERT_EQ(PIO::write_vtk(bare, tm, roots, N, std::vector<Singularity>()), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_VTK(no_constraints, tm, roots, N, singularities, PVF::parameters::face_scalars(scalars)), Error_code::SUCCESS);
+  ASSERT_EQ(PIO::write_VTK(bare, tm, roots, N, std::vector<Singularity>()), Error_code::SUCCESS);
   Vtk_file a, b;
   ASSERT_EQ(parse_vtk(no_constraints.str(), a), "");
   ASSERT_EQ(parse_vtk(bare.str(), b), "");
@@ -358,7 +358,7 @@ TEST(Vtk, VertexPointMapNamedParameter)
     put(moved, v, tm.point(v) + SC::Vector_3(10, 20, 30));
 
   std::ostringstream os;
-  ASSERT_EQ(PIO::write_vtk(os, tm, roots, 1, std::vector<PVF::Singularity<Mesh::Vertex_index> >(),
+  ASSERT_EQ(PIO::write_VTK(os, tm, roots, 1, std::vector<PVF::Singularity<Mesh::Vertex_index> >(),
                            CGAL::parameters::vertex_point_map(moved)),
             Error_code::SUCCESS);
   Vtk_file vtk;
@@ -401,16 +401,16 @@ TEST(Vtk, BadInputWritesNothing)
   auto expect_failure = [&](Error_code expected, std::size_t N, const std::vector<Singularity>& s,
                             const PIO::Face_scalar_arrays& scalars, const std::vector<face_descriptor>& c) {
     std::ostringstream os;
-    EXPECT_EQ(PIO::write_vtk(os, tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
+    EXPECT_EQ(PIO::write_VTK(os, tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
     EXPECT_TRUE(os.str().empty());
-    EXPECT_EQ(PIO::write_vtk(existing, tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
-    EXPECT_EQ(PIO::write_vtk(dir.file("new.vtk"), tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
+    EXPECT_EQ(PIO::write_VTK(existing, tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
+    EXPECT_EQ(PIO::write_VTK(dir.file("new.vtk"), tm, roots, N, s, PVF::parameters::face_scalars(scalars, PVF::parameters::constrained_faces(c))), expected);
     EXPECT_EQ(file_content(existing), "old\n");
     EXPECT_EQ(dir.entries(), std::set<std::string>{ "old.vtk" });
   };
   {
     std::ostringstream os;
-    ASSERT_EQ(PIO::write_vtk(os, tm, roots, 2, sings, PVF::parameters::face_scalars(good, PVF::parameters::constrained_faces(constrained))), Error_code::SUCCESS);
+    ASSERT_EQ(PIO::write_VTK(os, tm, roots, 2, sings, PVF::parameters::face_scalars(good, PVF::parameters::constrained_faces(constrained))), Error_code::SUCCESS);
   }
   expect_failure(Error_code::INVALID_DEGREE, 0, sings, good, constrained);
   expect_failure(Error_code::INCONSISTENT_DEGREE, 3, sings, good, constrained);
@@ -441,14 +441,14 @@ TEST(Vtk, BadInputWritesNothing)
   // A flag vector of the wrong size.
   std::ostringstream os;
   const std::vector<bool> wrong_size(F + 1, false);
-  EXPECT_EQ(PIO::write_vtk(os, tm, roots, 2, sings, PVF::parameters::face_scalars(good, PVF::parameters::is_constrained(wrong_size))),
+  EXPECT_EQ(PIO::write_VTK(os, tm, roots, 2, sings, PVF::parameters::face_scalars(good, PVF::parameters::is_constrained(wrong_size))),
             Error_code::INVALID_PARAMETER);
   EXPECT_TRUE(os.str().empty());
   // No directory, unwritable stream.
-  EXPECT_EQ(PIO::write_vtk(dir.file("missing/x.vtk"), tm, roots, 2, sings), Error_code::CANNOT_OPEN_FILE);
+  EXPECT_EQ(PIO::write_VTK(dir.file("missing/x.vtk"), tm, roots, 2, sings), Error_code::CANNOT_OPEN_FILE);
   std::ostringstream broken;
   broken.setstate(std::ios::failbit);
-  EXPECT_EQ(PIO::write_vtk(broken, tm, roots, 2, sings), Error_code::CANNOT_OPEN_FILE);
+  EXPECT_EQ(PIO::write_VTK(broken, tm, roots, 2, sings), Error_code::CANNOT_OPEN_FILE);
   EXPECT_EQ(dir.entries(), std::set<std::string>{ "old.vtk" });
 }
 
@@ -462,12 +462,12 @@ TEST(Vtk, NonTriangleAndEmptyMeshes)
   for(auto f : faces(quad))
     put(roots, f, std::vector<SC::Vector_3>{ SC::Vector_3(1, 0, 0) });
   std::ostringstream os;
-  EXPECT_EQ(PIO::write_vtk(os, quad, roots, 1, std::vector<Singularity>()), Error_code::NON_TRIANGLE_FACE);
+  EXPECT_EQ(PIO::write_VTK(os, quad, roots, 1, std::vector<Singularity>()), Error_code::NON_TRIANGLE_FACE);
   EXPECT_TRUE(os.str().empty());
 
   Mesh empty;
   auto empty_roots = get(CGAL::dynamic_face_property_t<std::vector<SC::Vector_3> >(), empty);
-  EXPECT_EQ(PIO::write_vtk(os, empty, empty_roots, 1, std::vector<Singularity>()), Error_code::EMPTY_MESH);
+  EXPECT_EQ(PIO::write_VTK(os, empty, empty_roots, 1, std::vector<Singularity>()), Error_code::EMPTY_MESH);
   EXPECT_TRUE(os.str().empty());
 }
 

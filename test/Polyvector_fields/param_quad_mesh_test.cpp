@@ -25,7 +25,7 @@
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/design_polyvector_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/face_frames.h>
@@ -775,7 +775,7 @@ TEST(QuadPlanarity, FaceMapAndStatistics)
   const Quad_inspired& S = quad_inspired("inspired");
   Mesh qm = S.qm;
   auto fp = qm.add_property_map<Face, double>("f:p").first;
-  PVF::Planarity_statistics st;
+  PVF::Planarity_result st;
   ASSERT_EQ(PVF::quad_planarity(qm, fp, st), PVF::Error_code::SUCCESS);
   double mx = 0;
   for(Face f : faces(qm))

@@ -19,8 +19,8 @@
 #include <CGAL/Polyvector_fields/Cholmod_solver.h>
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
-#include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 

@@ -31,10 +31,10 @@
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/Polyvector_field_designer.h>
-#include <CGAL/Polyvector_fields/angle_bounded_frame_field.h>
+#include <CGAL/Polyvector_fields/design_angle_bounded_frame_field.h>
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/compute_singularities.h>
-#include <CGAL/Polyvector_fields/conjugate_frame_field.h>
+#include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
 #include <CGAL/Polyvector_fields/find_out_of_range_constraint_vector.h>
@@ -64,7 +64,7 @@ namespace pvf_cli {
 struct Input_mesh
 {
   Mesh tm;
-  PVF::IO::Mesh_repair_report report;
+  PVF::IO::Mesh_repair_result report;
 };
 
 Input_mesh load_mesh(const Options& o)
@@ -462,7 +462,7 @@ struct Quad_stage
   bool computed = false;
   Mesh quads;
   PVF::Quad_extraction_result extraction;
-  PVF::Planarity_statistics before, after;
+  PVF::Planarity_result before, after;
   bool planarized = false;
   PVF::Planarization_result planarization;
   double time_extraction = 0, time_planarization = 0;
@@ -516,7 +516,7 @@ void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& const
     for(const Constraint& c : constraints.list)
       constrained.push_back(c.face);
     outputs.write(o.out_vtk, [&](std::ostream& s) {
-                    return PVF::IO::write_vtk(s, tm, a.roots, o.degree, a.singularities,
+                    return PVF::IO::write_VTK(s, tm, a.roots, o.degree, a.singularities,
                                               PVF::parameters::face_scalars(a.face_arrays, PVF::parameters::constrained_faces(constrained)));
                   }, o.out_vtk);
   }

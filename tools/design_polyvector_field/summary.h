@@ -64,7 +64,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Constraint_s
                    const Stopwatch& clock)
 {
   const Mesh& tm = input.tm;
-  const PVF::IO::Mesh_repair_report& r = input.report;
+  const PVF::IO::Mesh_repair_result& r = input.report;
   int sum = 0, positive = 0, negative = 0;
   for(const auto& s : a.singularities)
   {

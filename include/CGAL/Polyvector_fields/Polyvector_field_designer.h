@@ -19,7 +19,7 @@
 #include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Kernel_traits.h>

@@ -11,7 +11,7 @@
 /// \file Smoothness_weights.h
 
 #include <CGAL/Polyvector_fields/face_frames.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

@@ -17,7 +17,7 @@
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
 #include <CGAL/Polyvector_fields/internal/Tangent_bundle/frames_and_transport.h>
 #include <CGAL/Polyvector_fields/internal/parallel.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

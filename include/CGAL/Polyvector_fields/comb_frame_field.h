@@ -20,7 +20,7 @@
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/Corner_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/comb_and_cut.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -18,7 +18,7 @@
 #include <CGAL/Polyvector_fields/compute_field_roots.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/singularity_indices.h>
 #include <CGAL/Polyvector_fields/internal/field_access.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/boost/graph/helpers.h>

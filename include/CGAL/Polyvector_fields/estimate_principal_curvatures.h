@@ -16,7 +16,7 @@
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Curvature/curvature_tensor.h>
 #include <CGAL/Polyvector_fields/internal/Curvature/face_principal_curvatures.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>

@@ -22,7 +22,7 @@
 #include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/extract_from_chart_mesh.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

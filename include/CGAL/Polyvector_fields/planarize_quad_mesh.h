@@ -17,7 +17,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
 #include <CGAL/Polyvector_fields/internal/Planarization/Local_global_planarization.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 
 #include <CGAL/Eigen_solver_traits.h>

@@ -13,7 +13,7 @@
 /// \file quad_planarity.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -28,7 +28,7 @@ namespace Polyvector_fields {
 /// \ingroup PkgPolyvectorFieldsQuadMeshes
 ///
 /// the largest and the mean planarity of a quad mesh, filled by `quad_planarity()`.
-struct Planarity_statistics
+struct Planarity_result
 {
   std::size_t faces = 0;  ///< faces measured
   double max = 0;         ///< largest planarity
@@ -93,14 +93,14 @@ inline double quad_planarity(const std::array<double, 3>& p0, const std::array<d
 ///
 /// \sa `planarize_quad_mesh()`, `IO::write_quad_mesh_VTK()`
 template <typename PolygonMesh, typename FacePlanarityMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code quad_planarity(const PolygonMesh& pm, FacePlanarityMap planarity_map, Planarity_statistics& stats,
+Error_code quad_planarity(const PolygonMesh& pm, FacePlanarityMap planarity_map, Planarity_result& stats,
                           const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     CGAL::get_const_property_map(CGAL::vertex_point, pm));
-  stats = Planarity_statistics();
+  stats = Planarity_result();
   if(faces(pm).empty())
     return Error_code::EMPTY_MESH;
   for(auto f : faces(pm))
@@ -134,7 +134,7 @@ template <typename PolygonMesh, typename FacePlanarityMap, typename NamedParamet
 Error_code quad_planarity(const PolygonMesh& pm, FacePlanarityMap planarity_map,
                           const NamedParameters& np = CGAL::parameters::default_values())
 {
-  Planarity_statistics stats;
+  Planarity_result stats;
   return quad_planarity(pm, planarity_map, stats, np);
 }
 

@@ -16,7 +16,7 @@
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/internal/Curvature/curvature_constraint_selection.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <type_traits>
 #include <vector>

@@ -92,7 +92,7 @@ inline void run(Format format, const std::uint8_t* data, std::size_t size)
     PVF_FUZZ_CHECK(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), "a non-finite point was read");
 
   Mesh tm = tetrahedron();
-  PIO::Mesh_repair_report report;
+  PIO::Mesh_repair_result report;
   report.file_vertices = 777;
   report.source_face = { 1, 2, 3 };
   message.clear();

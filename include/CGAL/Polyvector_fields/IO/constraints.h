@@ -17,7 +17,7 @@
 #include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
 #include <CGAL/Polyvector_fields/IO/internal/mesh_indices.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -560,7 +560,7 @@ Error_code read_dmat_constraints(const std::string& b_filename, const std::strin
 /// reads the constraint file `filename` as `read_constraints()` does, but on
 /// face ids `0 .. number_of_faces-1` rather than on the faces of a mesh: for a
 /// mesh that has been changed since the file was made (see
-/// `read_triangle_mesh()` and `Mesh_repair_report::source_face`).
+/// `read_triangle_mesh()` and `Mesh_repair_result::source_face`).
 ///
 /// \tparam Vector_3 a vector type constructible from three `double`
 ///

@@ -57,10 +57,10 @@ namespace IO {
 ///   (not below `report.file_faces`) or that the repair removed;
 /// - `Error_code::SUCCESS` otherwise.
 ///
-/// \sa `read_triangle_mesh()`, `Mesh_repair_report`
+/// \sa `read_triangle_mesh()`, `Mesh_repair_result`
 template <typename TriangleMesh, typename FaceDescriptor, typename Vector_3>
 Error_code map_constraints_to_repaired_mesh(const TriangleMesh& tm,
-                                            const Mesh_repair_report& report,
+                                            const Mesh_repair_result& report,
                                             const std::vector<Face_constraint<std::size_t, Vector_3> >& file_constraints,
                                             std::vector<Face_constraint<FaceDescriptor, Vector_3> >& out,
                                             std::size_t* failed_constraint = nullptr)

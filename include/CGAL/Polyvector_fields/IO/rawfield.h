@@ -16,7 +16,7 @@
 #include <CGAL/Polyvector_fields/IO/internal/mesh_indices.h>
 #include <CGAL/Polyvector_fields/IO/internal/rawfield_text.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

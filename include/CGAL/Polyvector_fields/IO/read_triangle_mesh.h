@@ -16,7 +16,7 @@
 #include <CGAL/Polyvector_fields/IO/internal/polygon_soup.h>
 #include <CGAL/Polyvector_fields/IO/internal/soup_to_mesh.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -32,7 +32,7 @@ namespace IO {
 ///
 /// says what `read_triangle_mesh()` changed to make the file a triangle mesh
 /// that can carry a field. Every count is 0 for a file that was already one.
-struct Mesh_repair_report
+struct Mesh_repair_result
 {
   std::size_t file_vertices = 0;        ///< vertices in the file
   std::size_t file_faces = 0;           ///< faces (polygons) in the file
@@ -112,7 +112,7 @@ struct Mesh_repair_report
 ///          a repeated vertex, zero area), `NON_TRIANGLE_FACE`, `DUPLICATE_FACE` or `NON_MANIFOLD_MESH`.
 ///          On failure `tm` and `report` are left as they were.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code read_triangle_mesh(const std::string& filename, TriangleMesh& tm, Mesh_repair_report& report,
+Error_code read_triangle_mesh(const std::string& filename, TriangleMesh& tm, Mesh_repair_result& report,
                               const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;

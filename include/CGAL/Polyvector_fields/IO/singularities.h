@@ -16,7 +16,7 @@
 #include <CGAL/Polyvector_fields/IO/internal/mesh_indices.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
 #include <CGAL/Polyvector_fields/Singularity.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -16,7 +16,7 @@
 #include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
 #include <CGAL/Polyvector_fields/IO/internal/vtk_text.h>
 #include <CGAL/Polyvector_fields/IO/singularities.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -32,13 +32,13 @@ namespace IO {
 
 /// \ingroup PkgPolyvectorFieldsIO
 ///
-/// is a list of named per-face scalar arrays for `write_vtk()`: each entry is
+/// is a list of named per-face scalar arrays for `write_VTK()`: each entry is
 /// a name and one value per face, in the order of `faces(tm)`.
 typedef std::vector<std::pair<std::string, std::vector<double> > > Face_scalar_arrays;
 
 namespace internal {
 
-// Reads the named parameters of write_vtk() and builds the whole file.
+// Reads the named parameters of write_VTK() and builds the whole file.
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename NamedParameters>
 Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N,
                          const SingularityRange& singularities, const NamedParameters& np, std::string& out)
@@ -150,7 +150,7 @@ Error_code vtk_to_string(const TriangleMesh& tm, RootMap root_map, std::size_t N
 ///
 /// \sa `write_rawfield()`, `write_singularities()`
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+Error_code write_VTK(std::ostream& os, const TriangleMesh& tm, RootMap root_map, std::size_t N,
                      const SingularityRange& singularities, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;
@@ -169,7 +169,7 @@ Error_code write_vtk(std::ostream& os, const TriangleMesh& tm, RootMap root_map,
 /// \returns the codes of the stream overload; `Error_code::CANNOT_OPEN_FILE` if
 ///          the file cannot be created, written or renamed.
 template <typename TriangleMesh, typename RootMap, typename SingularityRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Error_code write_vtk(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
+Error_code write_VTK(const std::string& filename, const TriangleMesh& tm, RootMap root_map, std::size_t N,
                      const SingularityRange& singularities, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   std::string text;

@@ -49,7 +49,7 @@ namespace Polyvector_fields {
 namespace IO {
 namespace internal {
 
-// What a repair changed (see Mesh_repair_report).
+// What a repair changed (see Mesh_repair_result).
 struct Soup_repair_counts
 {
   std::size_t merged_points = 0;

@@ -147,7 +147,7 @@ Error_code remove_degenerate_triangles(TriangleMesh& mesh, SourceMap source_of, 
 }
 
 // The checks and repairs of read_triangle_mesh() on a soup already read.
-// `Report` is `Mesh_repair_report`; `tm` and `report` are assigned only on success.
+// `Report` is `Mesh_repair_result`; `tm` and `report` are assigned only on success.
 template <typename TriangleMesh, typename Report>
 Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Report& report, bool repair,
                                  const Diagnostic& diagnostic)

@@ -21,7 +21,7 @@
 // the named parameter `error_message`.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <algorithm>
 #include <charconv>

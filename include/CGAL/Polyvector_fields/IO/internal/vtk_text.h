@@ -8,7 +8,7 @@
 #ifndef CGAL_POLYVECTOR_FIELDS_IO_INTERNAL_VTK_TEXT_H
 #define CGAL_POLYVECTOR_FIELDS_IO_INTERNAL_VTK_TEXT_H
 
-// The text of the legacy VTK file of write_vtk(), section by section, and the
+// The text of the legacy VTK file of write_VTK(), section by section, and the
 // checks of its input.
 
 #include <CGAL/Polyvector_fields/Error_code.h>

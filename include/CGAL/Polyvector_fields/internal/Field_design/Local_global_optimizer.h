@@ -35,7 +35,7 @@
 #include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
 #include <CGAL/Polyvector_fields/internal/parallel.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

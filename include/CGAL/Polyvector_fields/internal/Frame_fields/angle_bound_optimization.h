@@ -17,7 +17,7 @@
 #include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_projection.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/frame_field_optimization.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

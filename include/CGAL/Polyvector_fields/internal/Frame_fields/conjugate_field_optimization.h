@@ -19,7 +19,7 @@
 #include <CGAL/Polyvector_fields/estimate_principal_curvatures.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/conjugacy_projection.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/frame_field_optimization.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

@@ -21,7 +21,7 @@
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/Local_global_optimizer.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/frame_field_polynomial.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

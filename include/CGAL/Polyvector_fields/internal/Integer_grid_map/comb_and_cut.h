@@ -17,7 +17,7 @@
 #include <CGAL/Polyvector_fields/compute_singularities.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/Corner_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
 

@@ -18,7 +18,7 @@
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/mixed_integer_solve.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/seamless_reduction.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -18,7 +18,7 @@
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_over_repair.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/quad_cells.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/trimmed_boundary.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -59,7 +59,7 @@ inline Error_code transitions_and_fans(Chart_mesh& M, bool given_transitions, st
 template <typename Report>
 Error_code repair_and_count_seams(Chart_mesh& M, bool given_transitions, std::size_t rings, Report& result)
 {
-  Fold_over_report fo;
+  Fold_over_result fo;
   Error_code code = repair_fold_overs(M, rings, fo);
   if(code != Error_code::SUCCESS)
     result.diagnostic = fo.remaining ? "fold-overs left after the repair" : "every triangle has zero uv area";

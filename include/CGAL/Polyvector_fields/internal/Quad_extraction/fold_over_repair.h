@@ -41,7 +41,7 @@ namespace qex {
 // values are snapped to a dyadic grid and mapped back into each face's chart by the
 // same exact transitions. A region is kept only if all its faces come out positive.
 // ---------------------------------------------------------------------------
-struct Fold_over_report
+struct Fold_over_result
 {
   std::size_t flipped_faces = 0;      // faces with det <= 0 in the input map
   std::size_t degenerate_faces = 0;   // of which det == 0
@@ -229,7 +229,7 @@ inline bool spread_cone_star(Chart_mesh& M, std::size_t v, const std::vector<cha
 }
 
 inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region, const std::vector<char>& in_region,
-                          Fold_over_report& report, int mode)
+                          Fold_over_result& report, int mode)
 {
   const bool tutte = mode >= 1;
   std::vector<std::size_t> local(M.V, npos);
@@ -427,9 +427,9 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
   return true;
 }
 
-inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_over_report& report)
+inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_over_result& report)
 {
-  report = Fold_over_report();
+  report = Fold_over_result();
   std::vector<char> flipped(M.F, 0);
   std::size_t positive = 0;
   for(std::size_t f = 0; f < M.F; ++f)

@@ -5,16 +5,16 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_ANGLE_BOUNDED_FRAME_FIELD_H
-#define CGAL_POLYVECTOR_FIELDS_ANGLE_BOUNDED_FRAME_FIELD_H
+#ifndef CGAL_POLYVECTOR_FIELDS_DESIGN_ANGLE_BOUNDED_FRAME_FIELD_H
+#define CGAL_POLYVECTOR_FIELDS_DESIGN_ANGLE_BOUNDED_FRAME_FIELD_H
 
-/// \file angle_bounded_frame_field.h
+/// \file design_angle_bounded_frame_field.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/angle_bound_optimization.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -162,4 +162,4 @@ Error_code design_angle_bounded_frame_field(const Mesh_or_bundle& mesh_or_bundle
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_ANGLE_BOUNDED_FRAME_FIELD_H
+#endif // CGAL_POLYVECTOR_FIELDS_DESIGN_ANGLE_BOUNDED_FRAME_FIELD_H

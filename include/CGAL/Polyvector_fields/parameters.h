@@ -5,8 +5,8 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_PARAMETERS_H
-#define CGAL_POLYVECTOR_FIELDS_INTERNAL_PARAMETERS_H
+#ifndef CGAL_POLYVECTOR_FIELDS_PARAMETERS_H
+#define CGAL_POLYVECTOR_FIELDS_PARAMETERS_H
 
 // Named parameters of this package.
 //
@@ -50,10 +50,10 @@
   } } }
 
 // Field design (paper Section 3).
-/// `bool`: the field is made of pairs {u, -u} (only even-degree coefficients); default `false`.
+// `bool`: the field is made of pairs {u, -u} (only even-degree coefficients); default `false`.
 CGAL_PVF_ADD_NAMED_PARAMETER(sign_symmetric_t, sign_symmetric, sign_symmetric)
-/// `Smoothness_weights`: the weight of each interior edge in the smoothness
-/// energy; default `Smoothness_weights::UNIFORM` (the paper's Eq. 6).
+// `Smoothness_weights`: the weight of each interior edge in the smoothness
+// energy; default `Smoothness_weights::UNIFORM` (the paper's Eq. 6).
 CGAL_PVF_ADD_NAMED_PARAMETER(smoothness_weights_t, smoothness_weights, smoothness_weights)
 
 // Frame fields (paper Section 4).
@@ -67,39 +67,39 @@ CGAL_PVF_ADD_NAMED_PARAMETER(tolerance_t, tolerance, tolerance)
 CGAL_PVF_ADD_NAMED_PARAMETER(principal_curvature_map_t, principal_curvature_map, principal_curvature_map)
 
 // Input and output.
-/// `std::size_t`: the degree `N` that a reader expects in the file; a file of
-/// another degree gives `Error_code::INCONSISTENT_DEGREE`. The default `0`
-/// accepts any degree.
+// `std::size_t`: the degree `N` that a reader expects in the file; a file of
+// another degree gives `Error_code::INCONSISTENT_DEGREE`. The default `0`
+// accepts any degree.
 CGAL_PVF_ADD_NAMED_PARAMETER(expected_degree_t, expected_degree, expected_degree)
-/// `std::size_t`: the largest input a reader accepts, in bytes.
+// `std::size_t`: the largest input a reader accepts, in bytes.
 CGAL_PVF_ADD_NAMED_PARAMETER(maximum_file_size_t, maximum_file_size, maximum_file_size)
-/// `bool`: whether a mesh reader repairs what it can (see `IO::read_triangle_mesh()`).
+// `bool`: whether a mesh reader repairs what it can (see `IO::read_triangle_mesh()`).
 CGAL_PVF_ADD_NAMED_PARAMETER(repair_t, repair, repair)
 
 // Parametrization (integer-grid maps).
-/// `double` in (0, pi/2], in radians: frames whose two directions make a smaller angle
-/// (or one larger than pi minus it) are clamped to it (see `comb_frame_field()`).
+// `double` in (0, pi/2], in radians: frames whose two directions make a smaller angle
+// (or one larger than pi minus it) are clamped to it (see `comb_frame_field()`).
 CGAL_PVF_ADD_NAMED_PARAMETER(minimum_frame_angle_t, minimum_frame_angle, minimum_frame_angle)
 
-/// `double > 0`: the length, in mesh units, of one unit of uv along the unit field directions (the quad size).
+// `double > 0`: the length, in mesh units, of one unit of uv along the unit field directions (the quad size).
 CGAL_PVF_ADD_NAMED_PARAMETER(target_edge_length_t, target_edge_length, target_edge_length)
-/// `double > 0`: growth of the face weights at each stiffening round.
+// `double > 0`: growth of the face weights at each stiffening round.
 CGAL_PVF_ADD_NAMED_PARAMETER(stiffening_factor_t, stiffening_factor, stiffening_factor)
-/// `bool`: refactor the whole system after each rounding instead of the Schur-complement update (a reference, for tests and benchmarks).
+// `bool`: refactor the whole system after each rounding instead of the Schur-complement update (a reference, for tests and benchmarks).
 CGAL_PVF_ADD_NAMED_PARAMETER(rounding_by_refactorization_t, rounding_by_refactorization, rounding_by_refactorization)
 
 // Quad meshes.
-/// `bool`: `extract_quad_mesh()` keeps the cells cut by the mesh boundary as trimmed polygons; default `false` (whole quads only).
+// `bool`: `extract_quad_mesh()` keeps the cells cut by the mesh boundary as trimmed polygons; default `false` (whole quads only).
 CGAL_PVF_ADD_NAMED_PARAMETER(keep_trimmed_boundary_t, keep_trimmed_boundary, keep_trimmed_boundary)
-/// `std::size_t`: the largest ring count of a fold-over repair region of `extract_quad_mesh()` (0: no repair); default 6.
+// `std::size_t`: the largest ring count of a fold-over repair region of `extract_quad_mesh()` (0: no repair); default 6.
 CGAL_PVF_ADD_NAMED_PARAMETER(fold_over_repair_rings_t, fold_over_repair_rings, fold_over_repair_rings)
-/// `double > 0`: the largest face planarity that `planarize_quad_mesh()` must reach; default 0.01 (1%).
+// `double > 0`: the largest face planarity that `planarize_quad_mesh()` must reach; default 0.01 (1%).
 CGAL_PVF_ADD_NAMED_PARAMETER(planarity_threshold_t, planarity_threshold, planarity_threshold)
-/// `double > 0`: the weight of the closeness (proximal) term of `planarize_quad_mesh()`; default 1.
+// `double > 0`: the weight of the closeness (proximal) term of `planarize_quad_mesh()`; default 1.
 CGAL_PVF_ADD_NAMED_PARAMETER(closeness_weight_t, closeness_weight, closeness_weight)
-/// `double >= 0`: the weight of the fairness term (second differences along the polylines) of `planarize_quad_mesh()`; default 0.1.
+// `double >= 0`: the weight of the fairness term (second differences along the polylines) of `planarize_quad_mesh()`; default 0.1.
 CGAL_PVF_ADD_NAMED_PARAMETER(fairness_weight_t, fairness_weight, fairness_weight)
-/// `double` in (0, 1]: the factor applied at each iteration of `planarize_quad_mesh()` to the pull towards the surface and to the fairness target; default 0.9.
+// `double` in (0, 1]: the factor applied at each iteration of `planarize_quad_mesh()` to the pull towards the surface and to the fairness target; default 0.9.
 CGAL_PVF_ADD_NAMED_PARAMETER(closeness_decay_t, closeness_decay, closeness_decay)
 
 // Curvature estimation and curvature constraints.
@@ -126,13 +126,13 @@ CGAL_PVF_ADD_NAMED_PARAMETER(constrained_fraction_t, constrained_fraction, const
   }                                                                                         \
   } } }
 
-/// `std::string&`: receives, when a reader fails, the reason and where it is in the input.
+// `std::string&`: receives, when a reader fails, the reason and where it is in the input.
 CGAL_PVF_ADD_REFERENCE_PARAMETER(error_message_t, error_message, error_message, std::string)
-/// `std::size_t&`: receives the number of vertices whose curvature comes from
-/// the fallback estimator of `estimate_principal_curvatures()`.
+// `std::size_t&`: receives the number of vertices whose curvature comes from
+// the fallback estimator of `estimate_principal_curvatures()`.
 CGAL_PVF_ADD_REFERENCE_PARAMETER(fallback_vertices_t, fallback_vertices, fallback_vertices, std::size_t)
 
-// The per-face arrays of `IO::write_vtk()`, named, and its constrained faces
+// The per-face arrays of `IO::write_VTK()`, named, and its constrained faces
 // as one flag per face (in the order of faces(tm)) or as a list of faces.
 CGAL_PVF_ADD_REFERENCE_PARAMETER(face_scalars_t, face_scalars, face_scalars,
                                  const std::vector<std::pair<std::string, std::vector<double> > >)
@@ -217,8 +217,8 @@ auto restack(const CGAL::Named_function_parameters<T, Tag, TopBase>& top, const 
 
 } // namespace internal
 
-/// stacks the named-parameter packs `np1`, `np2`, ...; a value given in a later
-/// pack hides the same parameter in an earlier one.
+// stacks the named-parameter packs `np1`, `np2`, ...; a value given in a later
+// pack hides the same parameter in an earlier one.
 template <typename NP1>
 const NP1& combine(const NP1& np1)
 {
@@ -235,4 +235,4 @@ auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_PARAMETERS_H
+#endif // CGAL_POLYVECTOR_FIELDS_PARAMETERS_H

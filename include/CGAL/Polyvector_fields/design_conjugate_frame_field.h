@@ -5,17 +5,17 @@
 // This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
 // It is not part of CGAL.
 
-#ifndef CGAL_POLYVECTOR_FIELDS_CONJUGATE_FRAME_FIELD_H
-#define CGAL_POLYVECTOR_FIELDS_CONJUGATE_FRAME_FIELD_H
+#ifndef CGAL_POLYVECTOR_FIELDS_DESIGN_CONJUGATE_FRAME_FIELD_H
+#define CGAL_POLYVECTOR_FIELDS_DESIGN_CONJUGATE_FRAME_FIELD_H
 
-/// \file conjugate_frame_field.h
+/// \file design_conjugate_frame_field.h
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Principal_curvatures.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/Polyvector_field.h>
 #include <CGAL/Polyvector_fields/internal/Frame_fields/conjugate_field_optimization.h>
-#include <CGAL/Polyvector_fields/internal/parameters.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -238,4 +238,4 @@ Error_code design_conjugate_frame_field(const Mesh_or_bundle& mesh_or_bundle, co
 } // namespace Polyvector_fields
 } // namespace CGAL
 
-#endif // CGAL_POLYVECTOR_FIELDS_CONJUGATE_FRAME_FIELD_H
+#endif // CGAL_POLYVECTOR_FIELDS_DESIGN_CONJUGATE_FRAME_FIELD_H

@@ -12,6 +12,7 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
@@ -862,3 +863,91 @@ TEST(IgmOutput, VtkAndNonFiniteValues)
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------
+// Close singularities (issue 21): cancelled, merged or moved apart by the comb.
+// ---------------------------------------------------------------------------
+
+// A field with many close singularities: 60 random full constraints on bumpy.
+// The comb with a separation distance of twice the mean edge must keep the sum
+// of the indices, leave the counts it reports, and agree with the map: the index
+// that the map shows at every interior vertex (read from the uv angles, not from
+// the comb) is the comb's, and the map is seamless and has its singular corners
+// on integer points.
+TEST(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
+{
+  Mesh tm = load("bumpy.off");
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 60, 2, 11), field,
+                                         PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  std::vector<PVF::Singularity<Vertex> > sings;
+  ASSERT_EQ(PVF::compute_singularities(tm, 4, field, std::back_inserter(sings)), PVF::Error_code::SUCCESS);
+  int field_sum = 0;
+  for(const auto& s : sings)
+    field_sum += s.index_numerator;
+  double mean = 0;
+  for(auto e : edges(tm))
+    mean += CGAL::Polygon_mesh_processing::edge_length(e, tm);
+  mean /= double(num_edges(tm));
+  const double d = 2 * mean;
+
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> kept, separated;
+  ASSERT_EQ(PVF::comb_frame_field(bundle, field, kept), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(PVF::comb_frame_field(bundle, field, separated, PVF::parameters::singularity_cancellation_distance(d)),
+            PVF::Error_code::SUCCESS);
+  const PVF::Comb_result& r = separated.report();
+  EXPECT_EQ(kept.report().singular_vertices, sings.size());  // the default keeps them all
+  EXPECT_EQ(kept.report().cancelled_singularity_pairs + kept.report().merged_singularity_pairs +
+              kept.report().moved_singularities, 0u);
+  ASSERT_GT(r.cancelled_singularity_pairs + r.merged_singularity_pairs, 0u) << "the case must exercise the cancellation";
+  int comb_sum = 0;
+  std::size_t comb_singular = 0;
+  for(Vertex v : vertices(tm))
+  {
+    comb_sum += separated.index_numerator(v);
+    comb_singular += separated.index_numerator(v) != 0;
+    const int k = separated.index_numerator(v);
+    EXPECT_TRUE(k >= -2 && k <= 1) << "a merged vertex of valence " << 4 - k;
+  }
+  EXPECT_EQ(comb_sum, field_sum);  // Poincare-Hopf is kept
+  EXPECT_EQ(comb_singular, r.singular_vertices);
+  EXPECT_EQ(comb_singular, sings.size() - 2 * r.cancelled_singularity_pairs - r.merged_singularity_pairs);
+
+  auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result map;
+  ASSERT_EQ(PVF::compute_integer_grid_map(separated, uv, map, PVF::parameters::target_edge_length(d)),
+            PVF::Error_code::SUCCESS);
+  EXPECT_EQ(map.inconsistencies, 0u);
+  EXPECT_EQ(worst_seam_mismatch(tm, uv), 0.0);
+  std::size_t mismatched = 0;
+  double off_integer = 0;
+  for(Vertex v : vertices(tm))
+  {
+    if(CGAL::is_border(v, tm))
+      continue;
+    bool next_to_flip = false;  // the angles of a flipped face do not tell the index
+    for(auto h : halfedges_around_target(halfedge(v, tm), tm))
+    {
+      const UV a = uv[h], b = uv[next(h, tm)], c = uv[prev(h, tm)];
+      next_to_flip |= !((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) > 0);
+    }
+    if(next_to_flip)
+      continue;
+    mismatched += std::abs(map_index(tm, uv, v) - separated.index_numerator(v)) > 1e-6;
+    if(separated.index_numerator(v) != 0)
+      for(auto h : halfedges_around_target(halfedge(v, tm), tm))
+        off_integer = (std::max)({ off_integer, std::abs(uv[h][0] - std::round(uv[h][0])),
+                                   std::abs(uv[h][1] - std::round(uv[h][1])) });
+  }
+  EXPECT_EQ(mismatched, 0u);
+  EXPECT_EQ(off_integer, 0.0);
+  std::printf("[ bumpy, 60 random constraints ] %zu field singularities -> %zu (cancelled %zu, merged %zu, moved %zu); "
+              "%zu flipped faces\n",
+              sings.size(), r.singular_vertices, r.cancelled_singularity_pairs, r.merged_singularity_pairs,
+              r.moved_singularities, map.flipped_faces);
+  EXPECT_EQ(PVF::comb_frame_field(bundle, field, separated, PVF::parameters::singularity_cancellation_distance(-1.0)),
+            PVF::Error_code::INVALID_PARAMETER);
+}

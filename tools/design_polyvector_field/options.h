@@ -71,6 +71,12 @@ const char* usage =
   "parametrization (a seamless integer-grid map guided by the frame field; implies a frame field):\n"
   "  --parametrize            compute the map; one unit of uv is one quad of side about --edge-length\n"
   "  --edge-length H          the quad size in mesh units, > 0 (default: the mean edge length)\n"
+  "  --quads N                about N quads: the quad size is sqrt(surface area / N) (instead of\n"
+  "                           --edge-length)\n"
+  "  --keep-close-singularities  keep every singularity of the field; by default those closer than\n"
+  "                           one quad are cancelled (opposite indices), merged (into one vertex of\n"
+  "                           valence 3 to 6) or moved apart, since two of them on one integer point\n"
+  "                           fold the map over"
   "  --out-param FILE.obj     write the map as OBJ with one texture coordinate per corner (implies\n"
   "                           --parametrize; default with --parametrize: output/<mesh name>.param.obj)\n"
   "quad meshes (from the map; imply --parametrize):\n"
@@ -114,6 +120,8 @@ struct Options
   bool paper_stopping_rule = false;
   bool parametrize = false;
   double edge_length = 0;  // 0: the default, the mean edge length
+  std::size_t quads = 0;   // --quads N: the edge length from the area; 0: not given
+  bool keep_close_singularities = false;
   std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
   double planarity_threshold = 0;  // 0: no planarization
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
@@ -257,6 +265,8 @@ Options parse_options(int argc, char** argv)
     else if(flag == "--out-mesh") o.out_mesh = line.text();
     else if(flag == "--parametrize") o.parametrize = true;
     else if(flag == "--edge-length") o.edge_length = line.number(0, 1e300, true);
+    else if(flag == "--quads") o.quads = line.integer(1, 1000000000ull);
+    else if(flag == "--keep-close-singularities") o.keep_close_singularities = true;
     else if(flag == "--out-param")
     {
       o.out_param = line.text();
@@ -306,6 +316,12 @@ Options parse_options(int argc, char** argv)
     throw Failure("--sign-symmetric needs an even --degree", 2);
   if(o.edge_length > 0 && !o.parametrize)
     throw Failure("--edge-length goes with --parametrize", 2);
+  if(o.quads > 0 && !o.parametrize)
+    throw Failure("--quads goes with --parametrize or --quad-mesh", 2);
+  if(o.quads > 0 && o.edge_length > 0)
+    throw Failure("--quads and --edge-length both set the quad size: give one", 2);
+  if(o.keep_close_singularities && !o.parametrize)
+    throw Failure("--keep-close-singularities goes with --parametrize or --quad-mesh", 2);
   if(o.planarity_threshold > 0 && o.out_quads.empty())
     throw Failure("--planarize goes with --quad-mesh", 2);
   if(!o.out_quads.empty())

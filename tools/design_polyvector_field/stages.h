@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
 #include <CGAL/Polyvector_fields/IO/integer_grid_map.h>
@@ -444,10 +445,26 @@ Parametrization parametrize(const Options& o, Mesh& tm, const Bundle& bundle, co
   if(!o.parametrize)
     return p;
   p.uv = tm.add_property_map<Mesh::Halfedge_index, std::array<double, 2> >("h:pvf_uv").first;
+  // The quad size: given, from the quad count, or the mean edge length.
+  double h = o.edge_length;
+  if(o.quads > 0)
+    h = std::sqrt(CGAL::Polygon_mesh_processing::area(tm) / double(o.quads));
+  else if(!(h > 0))
+  {
+    double sum = 0;
+    for(auto e : edges(tm))
+      sum += CGAL::Polygon_mesh_processing::edge_length(e, tm);
+    h = num_edges(tm) > 0 ? sum / double(num_edges(tm)) : 0;
+  }
+  if(!(h > 0))
+    throw Failure("parametrization: the mesh has no area, so no quad size");
+  // Singularities closer than one quad would meet on one integer point.
+  const auto np = PVF::parameters::singularity_cancellation_distance(o.keep_close_singularities ? 0.0 : h);
+  // Without a given size, the map takes the mean edge length itself.
   const PVF::Error_code code =
-    o.edge_length > 0 ? PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result,
-                                                      PVF::parameters::target_edge_length(o.edge_length))
-                      : PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result);
+    o.edge_length > 0 || o.quads > 0
+      ? PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, PVF::parameters::target_edge_length(h, np))
+      : PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, np);
   check(code, "parametrization");
   p.computed = true;
   clock.lap("parametrization");

@@ -43,7 +43,10 @@ namespace Polyvector_fields {
 struct Comb_result
 {
   std::size_t clamped_faces = 0;       ///< faces whose frame was clamped (angle below the bound, or one zero vector)
-  std::size_t singular_vertices = 0;   ///< interior vertices of non-zero index
+  std::size_t singular_vertices = 0;   ///< interior vertices of non-zero index, after the cancellation
+  std::size_t cancelled_singularity_pairs = 0;  ///< pairs of opposite singularities closer than `singularity_cancellation_distance`, cancelled
+  std::size_t merged_singularity_pairs = 0;     ///< close pairs merged into one singular vertex of valence 3 to 6
+  std::size_t moved_singularities = 0;          ///< singularities moved away from a close one of the same sign (two +1: one vertex of valence 2 otherwise)
   std::size_t cut_edges = 0;           ///< interior edges of the cut graph (the seams)
   std::size_t boundary_edges = 0;      ///< boundary edges (always in the cut)
   std::size_t seam_curves = 0;         ///< maximal seam paths between nodes of the cut graph
@@ -141,8 +144,10 @@ public:
   const internal::Comb_data& data() const { return m_data; }
 
   // Combs: the body of comb_frame_field().
+  // `cancellation_distance`: see `singularity_cancellation_distance` (0: none).
   template <typename CoefficientMap>
-  Error_code compute(const Bundle& bundle, CoefficientMap coefficient_map, double min_angle)
+  Error_code compute(const Bundle& bundle, CoefficientMap coefficient_map, double min_angle,
+                     double cancellation_distance = 0)
   {
     m_mesh.reset();
     m_data = internal::Comb_data();
@@ -151,7 +156,8 @@ public:
     if(bundle.status() != Error_code::SUCCESS)
       return bundle.status();
     auto mesh = std::make_shared<const internal::Corner_mesh<Bundle> >(bundle);
-    const Error_code code = internal::comb_and_cut(*mesh, coefficient_map, min_angle, m_data, m_report);
+    const Error_code code =
+      internal::comb_and_cut(*mesh, coefficient_map, min_angle, cancellation_distance, m_data, m_report);
     if(code == Error_code::SUCCESS)
       m_mesh = mesh;
     return code;
@@ -194,10 +200,13 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 {
   comb = Frame_field_comb<Tangent_bundle<TriangleMesh, VertexPointMap> >();
   double min_angle = 0;
-  const Error_code parameter_code = internal::read_minimum_frame_angle(np, min_angle);
+  double cancellation_distance = 0;
+  Error_code parameter_code = internal::read_minimum_frame_angle(np, min_angle);
+  if(parameter_code == Error_code::SUCCESS)
+    parameter_code = internal::read_cancellation_distance(np, cancellation_distance);
   if(parameter_code != Error_code::SUCCESS)
     return parameter_code;
-  return comb.compute(bundle, coefficient_map, min_angle);
+  return comb.compute(bundle, coefficient_map, min_angle, cancellation_distance);
 }
 
 /// \ingroup PkgPolyvectorFieldsParametrization
@@ -251,6 +260,20 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///     \cgalParamType{`double` in `(0, pi/2]`}
 ///     \cgalParamDefault{10 degrees}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{singularity_cancellation_distance}
+///     \cgalParamDescription{singular vertices closer than this, along mesh edges, are handled
+///                           pair by pair, the closest first: opposite indices cancel, a pair whose
+///                           merged index makes a quad vertex of valence 3 to 6 merges, any other
+///                           pair (two of index 1/4) is moved apart. The index moves by whole quarter
+///                           turns of the matching along the shortest edge path, as with the period
+///                           jumps of mixed-integer quadrangulation. The map places every singular
+///                           vertex on an integer point: two closer than one quad would meet there,
+///                           and the faces between them would fold over. `Comb_result` counts the
+///                           pairs; its `singular_vertices` are those that remain. Given with
+///                           `Polyvector_fields::parameters::singularity_cancellation_distance()`}
+///     \cgalParamType{`double >= 0`, in mesh units; the quad size is the natural choice}
+///     \cgalParamDefault{0: every singularity of the field is kept}
+///   \cgalParamNEnd
 ///   \pvfParamVertexPointMap
 /// \cgalNamedParamsEnd
 ///
@@ -270,14 +293,17 @@ Error_code comb_frame_field(const Mesh_or_bundle& mesh_or_bundle, CoefficientMap
 {
   result = Comb_result();
   double min_angle = 0;
-  const Error_code parameter_code = internal::read_minimum_frame_angle(np, min_angle);
+  double cancellation_distance = 0;
+  Error_code parameter_code = internal::read_minimum_frame_angle(np, min_angle);
+  if(parameter_code == Error_code::SUCCESS)
+    parameter_code = internal::read_cancellation_distance(np, cancellation_distance);
   if(parameter_code != Error_code::SUCCESS)
     return parameter_code;
   const auto& bundle = internal::bundle_of(mesh_or_bundle, np);
   if(bundle.status() != Error_code::SUCCESS)
     return bundle.status();
   Frame_field_comb<std::decay_t<decltype(bundle)> > comb;
-  const Error_code code = comb.compute(bundle, coefficient_map, min_angle);
+  const Error_code code = comb.compute(bundle, coefficient_map, min_angle, cancellation_distance);
   result = comb.report();
   if(code != Error_code::SUCCESS)
     return code;

@@ -157,7 +157,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
   const double h = p.edge_length_given ? p.edge_length : result.mean_edge_length;
   result.target_edge_length = h;
   result.faces = M.F;
-  result.inconsistencies += D.pruned_nonzero_rotation;
+  result.inconsistencies += D.pruned_nonzero_rotation + (D.matching_inconsistent ? 1 : 0);
 
   // reduced unknowns, guidance system, rounds of solves
   auto t = std::chrono::steady_clock::now();
@@ -258,6 +258,12 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///     \cgalParamType{`double` in `(0, pi/2]`}
 ///     \cgalParamDefault{10 degrees}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{singularity_cancellation_distance}
+///     \cgalParamDescription{singular vertices closer than this are cancelled, merged or moved apart
+///                           before the map is solved; see `comb_frame_field()`}
+///     \cgalParamType{`double >= 0`, in mesh units}
+///     \cgalParamDefault{0: every singularity of the field is kept}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the maximum number of stiffening rounds after the first solve}
 ///     \cgalParamType{`std::size_t`}
@@ -315,8 +321,12 @@ Error_code compute_integer_grid_map(const Mesh_or_bundle& mesh_or_bundle, Coeffi
   code = internal::check_edge_length(p);
   if(code != Error_code::SUCCESS)
     return code;
+  double cancellation_distance = 0;
+  code = internal::read_cancellation_distance(np, cancellation_distance);
+  if(code != Error_code::SUCCESS)
+    return code;
   Frame_field_comb<std::decay_t<decltype(bundle)> > comb;
-  code = comb.compute(bundle, coefficient_map, min_angle);
+  code = comb.compute(bundle, coefficient_map, min_angle, cancellation_distance);
   result.comb = comb.report();
   if(code != Error_code::SUCCESS)
     return code;

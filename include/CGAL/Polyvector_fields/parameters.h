@@ -80,6 +80,10 @@ CGAL_PVF_ADD_NAMED_PARAMETER(repair_t, repair, repair)
 // `double` in (0, pi/2], in radians: frames whose two directions make a smaller angle
 // (or one larger than pi minus it) are clamped to it (see `comb_frame_field()`).
 CGAL_PVF_ADD_NAMED_PARAMETER(minimum_frame_angle_t, minimum_frame_angle, minimum_frame_angle)
+// `double >= 0`, in mesh units: singular vertices closer than this along mesh edges are
+// cancelled, merged or moved apart by the combing (see `comb_frame_field()`); default 0: none.
+CGAL_PVF_ADD_NAMED_PARAMETER(singularity_cancellation_distance_t, singularity_cancellation_distance,
+                             singularity_cancellation_distance)
 
 // `double > 0`: the length, in mesh units, of one unit of uv along the unit field directions (the quad size).
 CGAL_PVF_ADD_NAMED_PARAMETER(target_edge_length_t, target_edge_length, target_edge_length)

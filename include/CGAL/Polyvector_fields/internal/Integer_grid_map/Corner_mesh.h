@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <array>
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <vector>
@@ -106,7 +107,28 @@ struct Corner_mesh
     const std::array<double, 3> d = difference(point[target[c]], p0);
     return bundle.frame(f).to_complex(d[0], d[1], d[2]);
   }
+  // length of the edge of corner c
+  double edge_length(std::size_t c) const
+  {
+    const std::array<double, 3> d = difference(point[target[c]], point[source(c)]);
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
 };
+
+// The mean length of the edges of the mesh (the default quad size of the map).
+template <typename CornerMesh>
+double mean_edge_length(const CornerMesh& M)
+{
+  double edge_sum = 0;
+  std::size_t edge_count = 0;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    if(M.opposite[c] == npos || c < M.opposite[c])
+    {
+      edge_sum += M.edge_length(c);
+      ++edge_count;
+    }
+  return edge_count == 0 ? 0.0 : edge_sum / double(edge_count);
+}
 
 } // namespace internal
 } // namespace Polyvector_fields

@@ -17,6 +17,7 @@
 #include <CGAL/Polyvector_fields/compute_singularities.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/Corner_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/singularity_cancellation.h>
 #include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 #include <CGAL/Polyvector_fields/polyvector_polynomial.h>
@@ -66,6 +67,7 @@ struct Comb_data
   std::vector<char> node;             // per vertex: a node of the seam graph
   std::vector<std::size_t> component; // per face: the bundle's component
   std::size_t pruned_nonzero_rotation = 0;  // sanity: pruned edges must have r = 0
+  bool matching_inconsistent = false;       // sanity: the holonomy of the matching disagrees with the indices
 };
 
 // Reads and cleans the frame of one face: returns 0 if fine, 1 if clamped,
@@ -145,11 +147,12 @@ struct Matching_writer
   }
 };
 
-// Stage 1 of the pipeline: clean, match, comb, cut, prune, trace the seam
+// Stage 1 of the pipeline: clean, match, cancel, merge or separate the
+// singularities closer than `cancellation_distance` (0: none), comb, cut, prune, trace the seam
 // curves. `report` is a `Comb_result` (see comb_frame_field.h), reset here.
 template <typename CornerMesh, typename CoefficientMap, typename Report>
-Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, double min_angle, Comb_data& D,
-                        Report& report)
+Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, double min_angle,
+                        double cancellation_distance, Comb_data& D, Report& report)
 {
   typedef std::complex<double> Complex;
   using boost::get;
@@ -202,7 +205,16 @@ Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, dou
   D.index.assign(V, 0);
   for(const auto& s : singularities)
     D.index[bundle.index(s.vertex)] = s.index_numerator;
-  report.singular_vertices = singularities.size();
+  bool consistent = true;
+  const Singularity_separation separation =
+    separate_close_singularities(M, cancellation_distance, D.shift, D.index, consistent);
+  report.cancelled_singularity_pairs = separation.cancelled;
+  report.merged_singularity_pairs = separation.merged;
+  report.moved_singularities = separation.separated;
+  D.matching_inconsistent = !consistent;
+  report.singular_vertices = 0;
+  for(std::size_t v = 0; v < V; ++v)
+    report.singular_vertices += D.index[v] != 0;
 
   // 3. Combing along a breadth-first dual spanning tree, one per component of
   //    the bundle, seeded at its first face.
@@ -375,6 +387,20 @@ Error_code read_minimum_frame_angle(const NamedParameters& np, double& min_angle
   if(!std::isfinite(min_angle))
     return Error_code::NON_FINITE_VALUE;
   if(!(min_angle > 0) || min_angle > CGAL_PI / 2)
+    return Error_code::INVALID_PARAMETER;
+  return Error_code::SUCCESS;
+}
+
+// Reads and checks `singularity_cancellation_distance` (default 0: none).
+template <typename NamedParameters>
+Error_code read_cancellation_distance(const NamedParameters& np, double& distance)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  distance = choose_parameter(get_parameter(np, internal_np::singularity_cancellation_distance), 0.0);
+  if(!std::isfinite(distance))
+    return Error_code::NON_FINITE_VALUE;
+  if(distance < 0)
     return Error_code::INVALID_PARAMETER;
   return Error_code::SUCCESS;
 }

@@ -82,21 +82,6 @@ inline Error_code check_edge_length(const Seamless_map_parameters& p)
   return Error_code::SUCCESS;
 }
 
-template <typename CornerMesh>
-double mean_edge_length(const CornerMesh& M)
-{
-  double edge_sum = 0;
-  std::size_t edge_count = 0;
-  for(std::size_t c = 0; c < 3 * M.F; ++c)
-    if(M.opposite[c] == npos || c < M.opposite[c])
-    {
-      const auto dvec = difference(M.point[M.target[c]], M.point[M.source(c)]);
-      edge_sum += std::sqrt(dot(dvec, dvec));
-      ++edge_count;
-    }
-  return edge_sum / double(edge_count);
-}
-
 // The least-squares guidance: rows sqrt(A_f) (grad uv - J*_f), 4 per face, over
 // the reduced unknowns (B1 y - d1), with what the measures of a map need.
 struct Guidance_system

@@ -1,0 +1,255 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+//
+// Cancellation of close pairs of opposite singularities before the combing
+// (see comb_frame_field()): the matching is changed by whole quarter turns along
+// the shortest edge path between the two vertices, as in the integer period
+// jumps of Bommes, Zimmer, Kobbelt 2009 (mixed-integer quadrangulation).
+//
+// Why: the map places every singular vertex on an integer point. Two singular
+// vertices closer than one quad land on the same point, and the faces between
+// them fold over whatever the solver does. A pair of opposite indices closer
+// than the quad size is noise of the field, not a feature of the surface.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H
+
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// The holonomy of the matching around interior vertex v, mod 4: the sum of the
+// shifts met when walking around v from face(c) to face(opposite(next(c))),
+// starting from a corner c whose target is v. Shifting corner e by +1 (and its
+// opposite by -1) adds 1 at source(e) and takes 1 at target(e).
+template <typename CornerMesh>
+int matching_holonomy(const CornerMesh& M, const std::vector<int>& shift, std::size_t v)
+{
+  const std::size_t start = M.vertex_corner[v];
+  if(start == npos || M.border_vertex[v])
+    return 0;
+  int sum = 0;
+  std::size_t c = start;
+  do
+  {
+    const std::size_t crossing = CornerMesh::next(c);
+    sum += shift[crossing];
+    c = M.opposite[crossing];
+  } while(c != npos && c != start);
+  return mod4(sum);
+}
+
+// Singularities closer than `distance` along mesh edges, handled pair by pair,
+// the closest first:
+// - opposite indices (+k, -k) cancel: the index moves from one to the other;
+// - a pair whose merged index k satisfies -2 <= k <= 1 (a quad vertex of valence
+//   3 to 6) merges into one of the two;
+// - any other pair (two +1, say: merged, a vertex of valence 2) is separated: one of
+//   them moves to the closest interior vertex at least `distance` from every other
+//   singular vertex, within 3 `distance`.
+// An index moves from v to w by |k| quarter turns on the corners of the shortest
+// edge path through interior vertices; the vertices inside the path keep their
+// index (one quarter turn comes in, the same goes out). `shift` and `index` are
+// updated. Nothing is changed, and npos returned, when the holonomy of the
+// matching does not agree with the indices.
+struct Singularity_separation
+{
+  std::size_t cancelled = 0, merged = 0, separated = 0;
+};
+
+template <typename CornerMesh>
+Singularity_separation separate_close_singularities(const CornerMesh& M, double distance, std::vector<int>& shift,
+                                                    std::vector<int>& index, bool& consistent)
+{
+  Singularity_separation report;
+  consistent = true;
+  const std::size_t V = M.V, C = 3 * M.F;
+  if(!(distance > 0))
+    return report;
+  std::vector<std::size_t> singular;
+  for(std::size_t v = 0; v < V; ++v)
+    if(index[v] != 0 && !M.border_vertex[v])
+      singular.push_back(v);
+  if(singular.size() < 2)
+    return report;
+
+  // The sign that relates the holonomy to the index numerator: holonomy = sign * k (mod 4).
+  int sign = 0;
+  for(std::size_t v : singular)
+  {
+    const int h = matching_holonomy(M, shift, v);
+    const int plus = mod4(index[v]), minus = mod4(-index[v]);
+    if(plus == minus)
+      continue;  // k = 2 mod 4 tells nothing
+    const int s = h == plus ? 1 : (h == minus ? -1 : 0);
+    if(s == 0 || (sign != 0 && s != sign))
+    {
+      consistent = false;
+      return report;
+    }
+    sign = s;
+  }
+  if(sign == 0)
+    return report;
+
+  // Interior edges, as corners leaving each vertex.
+  std::vector<std::vector<std::size_t> > out(V);
+  for(std::size_t c = 0; c < C; ++c)
+    if(M.opposite[c] != npos)
+      out[M.source(c)].push_back(c);
+
+  // Dijkstra through interior vertices within `radius` from the sources;
+  // `visit(v, d)` returns true to stop. The arrays are reset after each search.
+  std::vector<double> dist(V, -1);
+  std::vector<std::size_t> via(V, npos), touched;
+  typedef std::pair<double, std::size_t> Item;
+  auto search = [&](const std::vector<std::size_t>& sources, double radius, auto&& visit) {
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+    for(std::size_t s : sources)
+    {
+      dist[s] = 0;
+      touched.push_back(s);
+      queue.push({ 0.0, s });
+    }
+    while(!queue.empty())
+    {
+      const auto [d, v] = queue.top();
+      queue.pop();
+      if(d > dist[v])
+        continue;
+      if(visit(v, d))
+        return;
+      if(M.border_vertex[v])
+        continue;
+      for(std::size_t c : out[v])
+      {
+        const std::size_t w = M.target[c];
+        const double dw = d + M.edge_length(c);
+        if(dw >= radius || M.border_vertex[w])
+          continue;
+        if(dist[w] < 0 || dw < dist[w])
+        {
+          if(dist[w] < 0)
+            touched.push_back(w);
+          dist[w] = dw;
+          via[w] = c;
+          queue.push({ dw, w });
+        }
+      }
+    }
+  };
+  auto reset = [&]() {
+    for(std::size_t v : touched)
+    {
+      dist[v] = -1;
+      via[v] = npos;
+    }
+    touched.clear();
+  };
+  // Moves index k from `from` to `to` along the path of the last search from `from`.
+  auto transfer = [&](std::size_t from, std::size_t to) {
+    const int k = index[from];
+    // Along corner c, index(source) -= k and index(target) += k: the holonomy at
+    // the source changes by -sign*k, so the corner's shift does.
+    for(std::size_t w = to; w != from;)
+    {
+      const std::size_t c = via[w];
+      shift[c] = mod4(shift[c] - sign * k);
+      shift[M.opposite[c]] = mod4(shift[M.opposite[c]] + sign * k);
+      w = M.source(c);
+    }
+    index[to] += k;
+    index[from] = 0;
+  };
+
+  // Close pairs.
+  struct Pair
+  {
+    double length;
+    std::size_t a, b;
+  };
+  std::vector<Pair> pairs;
+  for(std::size_t s : singular)
+  {
+    search({ s }, distance, [&](std::size_t v, double d) {
+      if(v > s && index[v] != 0)
+        pairs.push_back({ d, s, v });
+      return false;
+    });
+    reset();
+  }
+  std::sort(pairs.begin(), pairs.end(),
+            [](const Pair& x, const Pair& y) { return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b); });
+
+  for(const Pair& pair : pairs)
+  {
+    if(index[pair.a] == 0 || index[pair.b] == 0)
+      continue;
+    const int merged = index[pair.a] + index[pair.b];
+    if(merged >= -2 && merged <= 1)
+    {
+      // cancel or merge: move a's index onto b
+      bool reached = false;
+      search({ pair.a }, distance, [&](std::size_t v, double) { return reached = (v == pair.b); });
+      if(reached)
+      {
+        transfer(pair.a, pair.b);
+        ++(merged == 0 ? report.cancelled : report.merged);
+      }
+      reset();
+      continue;
+    }
+    // separate: the distance of every vertex to the other singularities
+    std::vector<std::size_t> others;
+    for(std::size_t v : singular)
+      if(v != pair.a && index[v] != 0)
+        others.push_back(v);
+    std::vector<double> clearance(V, std::numeric_limits<double>::infinity());
+    search(others, 4 * distance, [&](std::size_t v, double d) {
+      clearance[v] = d;
+      return false;
+    });
+    reset();
+    std::size_t target = npos;
+    search({ pair.a }, 3 * distance, [&](std::size_t v, double) {
+      if(v != pair.a && index[v] == 0 && !M.border_vertex[v] && clearance[v] >= distance)
+      {
+        target = v;
+        return true;
+      }
+      return false;
+    });
+    if(target != npos)
+    {
+      transfer(pair.a, target);
+      singular.push_back(target);
+      ++report.separated;
+    }
+    reset();
+  }
+  return report;
+}
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H

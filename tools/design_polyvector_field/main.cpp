@@ -47,6 +47,9 @@ int run(const Options& o)
   Output_files outputs(o);
   Input_mesh input = load_mesh(o);
   clock.lap("load mesh");
+  const Quad_size size = choose_quad_size(o, input);
+  if(size.refined())
+    clock.lap("refinement");
   // The frames, numbering and connection of the mesh, built once for every stage.
   const Bundle bundle(input.tm);
   check(bundle.status(), "mesh '" + o.mesh + "'");
@@ -55,11 +58,11 @@ int run(const Options& o)
   const Constraint_set constraints = gather_constraints(o, input, bundle, curvature, clock);
   const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
-  const Parametrization param = parametrize(o, input.tm, bundle, field, clock);
+  const Parametrization param = parametrize(o, input.tm, size, field, clock);
   Quad_stage quads;
   make_quad_mesh(o, input.tm, bundle, param, quads, clock);
   write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
-  print_summary(o, input, constraints, field, analysis, param, quads, outputs, clock);
+  print_summary(o, input, size, constraints, field, analysis, param, quads, outputs, clock);
   return EXIT_SUCCESS;
 }
 

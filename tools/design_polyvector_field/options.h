@@ -73,10 +73,10 @@ const char* usage =
   "  --edge-length H          the quad size in mesh units, > 0 (default: the mean edge length)\n"
   "  --quads N                about N quads: the quad size is sqrt(surface area / N) (instead of\n"
   "                           --edge-length)\n"
-  "  --keep-close-singularities  keep every singularity of the field; by default those closer than\n"
-  "                           one quad are cancelled (opposite indices), merged (into one vertex of\n"
-  "                           valence 3 to 6) or moved apart, since two of them on one integer point\n"
-  "                           fold the map over"
+  "  --singularity-separation F  singularities of the field closer than F quads are cancelled\n"
+  "                           (opposite indices), merged (into one vertex of valence 3 to 6) or moved\n"
+  "                           apart, since two of them on one integer point fold the map over\n"
+  "                           (default 1; 0 keeps every singularity of the field)"
   "  --out-param FILE.obj     write the map as OBJ with one texture coordinate per corner (implies\n"
   "                           --parametrize; default with --parametrize: output/<mesh name>.param.obj)\n"
   "quad meshes (from the map; imply --parametrize):\n"
@@ -121,7 +121,7 @@ struct Options
   bool parametrize = false;
   double edge_length = 0;  // 0: the default, the mean edge length
   std::size_t quads = 0;   // --quads N: the edge length from the area; 0: not given
-  bool keep_close_singularities = false;
+  double singularity_separation = 1;  // in quads
   std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
   double planarity_threshold = 0;  // 0: no planarization
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
@@ -205,6 +205,7 @@ private:
 Options parse_options(int argc, char** argv)
 {
   Options o;
+  bool separation_given = false;
   bool degree_given = false;
   Command_line line(argc, argv);
   std::string flag;
@@ -266,7 +267,11 @@ Options parse_options(int argc, char** argv)
     else if(flag == "--parametrize") o.parametrize = true;
     else if(flag == "--edge-length") o.edge_length = line.number(0, 1e300, true);
     else if(flag == "--quads") o.quads = line.integer(1, 1000000000ull);
-    else if(flag == "--keep-close-singularities") o.keep_close_singularities = true;
+    else if(flag == "--singularity-separation")
+    {
+      o.singularity_separation = line.number(0, 1e6);
+      separation_given = true;
+    }
     else if(flag == "--out-param")
     {
       o.out_param = line.text();
@@ -320,8 +325,8 @@ Options parse_options(int argc, char** argv)
     throw Failure("--quads goes with --parametrize or --quad-mesh", 2);
   if(o.quads > 0 && o.edge_length > 0)
     throw Failure("--quads and --edge-length both set the quad size: give one", 2);
-  if(o.keep_close_singularities && !o.parametrize)
-    throw Failure("--keep-close-singularities goes with --parametrize or --quad-mesh", 2);
+  if(separation_given && !o.parametrize)
+    throw Failure("--singularity-separation goes with --parametrize or --quad-mesh", 2);
   if(o.planarity_threshold > 0 && o.out_quads.empty())
     throw Failure("--planarize goes with --quad-mesh", 2);
   if(!o.out_quads.empty())

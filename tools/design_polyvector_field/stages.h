@@ -43,6 +43,7 @@
 #include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
 #include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
+#include <CGAL/Polyvector_fields/refine_for_quad_size.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 #include <CGAL/Polyvector_fields/select_sharp_edge_constraints.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>
@@ -85,6 +86,56 @@ Input_mesh load_mesh(const Options& o)
                   (!o.repair && repairable ? " (without --no-repair it would be repaired)" : ""));
   }
   return input;
+}
+
+// ---------------------------------------------------------------------------
+// Stage 3b (with a map): the quad size, and the mesh refined where it is too
+// coarse for it (edges longer than two quads split; see refine_for_quad_size()).
+// ---------------------------------------------------------------------------
+struct Quad_size
+{
+  double h = 0;                // the quad size, in mesh units
+  bool from_mean_edge = false; // the default rule chose the mean edge length (the map's own default)
+  std::size_t faces_before = 0, faces_after = 0;
+  bool refined() const { return faces_after != faces_before; }
+};
+
+// At least this many quads by default, so that a coarse mesh (a box of 12
+// triangles, a 50-face scan) gets a useful quad mesh.
+constexpr double default_minimum_quads = 1000;
+
+Quad_size choose_quad_size(const Options& o, Input_mesh& input)
+{
+  Quad_size q;
+  Mesh& tm = input.tm;
+  q.faces_before = q.faces_after = num_faces(tm);
+  if(!o.parametrize)
+    return q;
+  const double area = CGAL::Polygon_mesh_processing::area(tm);
+  if(o.edge_length > 0)
+    q.h = o.edge_length;
+  else if(o.quads > 0)
+    q.h = std::sqrt(area / double(o.quads));
+  else
+  {
+    double sum = 0;
+    for(auto e : edges(tm))
+      sum += CGAL::Polygon_mesh_processing::edge_length(e, tm);
+    const double mean = num_edges(tm) > 0 ? sum / double(num_edges(tm)) : 0;
+    const double small = std::sqrt(area / default_minimum_quads);
+    q.from_mean_edge = mean <= small;
+    q.h = q.from_mean_edge ? mean : small;
+  }
+  if(!(q.h > 0) || !std::isfinite(q.h))
+    throw Failure("mesh '" + o.mesh + "': it has no area, so no quad size");
+  std::vector<std::size_t> origin = input.report.source_face;
+  if(origin.size() != num_faces(tm))
+    origin.clear();
+  check(PVF::refine_for_quad_size(tm, q.h, origin), "refinement");
+  q.faces_after = num_faces(tm);
+  if(q.refined())
+    input.report.source_face = origin;
+  return q;
 }
 
 // ---------------------------------------------------------------------------
@@ -439,30 +490,18 @@ struct Parametrization
   PVF::Integer_grid_map_result result;
 };
 
-Parametrization parametrize(const Options& o, Mesh& tm, const Bundle& bundle, const Field& field, Stopwatch& clock)
+Parametrization parametrize(const Options& o, Mesh& tm, const Quad_size& size, const Field& field, Stopwatch& clock)
 {
   Parametrization p;
   if(!o.parametrize)
     return p;
   p.uv = tm.add_property_map<Mesh::Halfedge_index, std::array<double, 2> >("h:pvf_uv").first;
-  // The quad size: given, from the quad count, or the mean edge length.
-  double h = o.edge_length;
-  if(o.quads > 0)
-    h = std::sqrt(CGAL::Polygon_mesh_processing::area(tm) / double(o.quads));
-  else if(!(h > 0))
-  {
-    double sum = 0;
-    for(auto e : edges(tm))
-      sum += CGAL::Polygon_mesh_processing::edge_length(e, tm);
-    h = num_edges(tm) > 0 ? sum / double(num_edges(tm)) : 0;
-  }
-  if(!(h > 0))
-    throw Failure("parametrization: the mesh has no area, so no quad size");
+  const double h = size.h;
   // Singularities closer than one quad would meet on one integer point.
-  const auto np = PVF::parameters::singularity_cancellation_distance(o.keep_close_singularities ? 0.0 : h);
-  // Without a given size, the map takes the mean edge length itself.
+  const auto np = PVF::parameters::singularity_cancellation_distance(o.singularity_separation * h);
+  // With the mean edge length of an unrefined mesh, the map takes it itself.
   const PVF::Error_code code =
-    o.edge_length > 0 || o.quads > 0
+    !size.from_mean_edge || size.refined()
       ? PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, PVF::parameters::target_edge_length(h, np))
       : PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, np);
   check(code, "parametrization");

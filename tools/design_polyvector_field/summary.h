@@ -59,8 +59,8 @@ std::string solver_report(const PVF::Default_sparse_solver& solver)
   return m.str();
 }
 
-void print_summary(const Options& o, const Input_mesh& input, const Constraint_set& constraints, const Field& field,
-                   const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
+void print_summary(const Options& o, const Input_mesh& input, const Quad_size& size, const Constraint_set& constraints,
+                   const Field& field, const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
                    const Stopwatch& clock)
 {
   const Mesh& tm = input.tm;
@@ -101,6 +101,11 @@ void print_summary(const Options& o, const Input_mesh& input, const Constraint_s
   }
   else if(r.isolated_vertices)
     std::cout << "note            " << r.isolated_vertices << " isolated vertices are ignored\n";
+  if(size.refined())
+    std::cout << "refinement      " << size.faces_before << " -> " << size.faces_after
+              << " faces: edges longer than two quads (" << 2 * size.h
+              << ") split at their midpoints; the outputs refer to the refined mesh"
+              << (o.out_mesh.empty() ? " (write it with --out-mesh)" : "") << "\n";
   std::cout << "field           degree " << o.degree << (o.sign_symmetric ? ", sign-symmetric" : "") << ", "
             << field.statistics.number_of_degrees_solved << " coefficient degree(s) solved\n";
   std::cout << "constraints     " << constraints.list.size() << " faces (" << field.full << " full, " << field.partial

@@ -27,7 +27,7 @@
 namespace CGAL {
 namespace Polyvector_fields {
 
-/// \ingroup PkgPolyvectorFieldsRef
+/// \ingroup PkgPolyvectorFieldsParametrization
 ///
 /// refines the triangle mesh `tm` for a quad mesh of quad size `quad_size`: every
 /// edge longer than `2 * quad_size` is split at its midpoint, and the faces on either

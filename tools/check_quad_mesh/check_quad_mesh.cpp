@@ -85,6 +85,7 @@ typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Segment_primitive>> Segment_tree;
 const char* const usage_text =
     "usage: check_quad_mesh INPUT QUADS [--sharp-edges DEGREES] [--distance-tolerance T]\n"
     "                       [--distance-tolerance-edge F] [--min-area-ratio R] [--max-hausdorff H]\n"
+    "       check_quad_mesh INPUT --input-only\n"
     "  INPUT, QUADS              meshes (.off, .obj, .ply, .stl); QUADS is checked against INPUT\n"
     "  --sharp-edges DEGREES     also measure how well the quad edges follow the input edges\n"
     "                            whose dihedral angle exceeds DEGREES (reported, not a check)\n"
@@ -93,6 +94,7 @@ const char* const usage_text =
     "  --min-area-ratio R        fail when quad area / input area < R (default 0: reported only)\n"
     "  --max-hausdorff H         fail when an input vertex or face centroid lies farther than H bbox\n"
     "                            diagonals from the quads (default 0.01)\n"
+    "  --input-only              only read INPUT as the checks do: exit 0 when it makes a surface\n"
     "exit status: 0 valid, 1 invalid, 2 unreadable input or bad command line\n";
 
 struct Options {
@@ -103,6 +105,7 @@ struct Options {
   double distance_tolerance_edge = -1;  // in mean quad edge lengths; < 0: unused
   double min_area_ratio = 0;
   double max_hausdorff = 0.01;
+  bool input_only = false;
 };
 
 [[noreturn]] void usage_error(const std::string& message)
@@ -133,6 +136,10 @@ Options parse_options(int argc, char** argv)
       std::cout << usage_text;
       std::exit(0);
     }
+    if(arg == "--input-only") {
+      options.input_only = true;
+      continue;
+    }
     if(arg.rfind("--", 0) == 0) {
       if(i + 1 >= argc)
         usage_error(arg + " expects a value");
@@ -152,6 +159,12 @@ Options parse_options(int argc, char** argv)
     } else {
       positional.push_back(arg);
     }
+  }
+  if(options.input_only) {
+    if(positional.size() != 1)
+      usage_error("--input-only expects one mesh, INPUT");
+    options.input = positional[0];
+    return options;
   }
   if(positional.size() != 2)
     usage_error("expects two meshes, INPUT and QUADS");
@@ -511,6 +524,26 @@ int main(int argc, char** argv)
 
   Reference ref;
   build_reference(options.input, ref);
+  if(options.input_only) {
+    std::size_t closed = 0;
+    for(const Input_component& c : ref.components)
+      closed += c.closed() ? 1 : 0;
+    // A surface has no edge shared by more than two faces (the repair splits
+    // non-manifold vertices, but such an edge is a cell complex, not a surface).
+    std::vector<Point> input_points;
+    std::vector<Polygon> input_polygons;
+    read_soup(options.input, "INPUT", input_points, input_polygons);
+    PMP::repair_polygon_soup(input_points, input_polygons);
+    const Quad_topology input_topo = quad_topology(input_points.size(), input_polygons);
+    std::cout << "input: " << options.input << ": " << num_faces(ref.mesh) << " triangles, "
+              << ref.components.size() << " component(s), " << closed << " closed, bbox diagonal "
+              << format(ref.diagonal) << ", area " << format(ref.area) << ", "
+              << input_topo.non_manifold_edges << " edges of more than two faces\n";
+    if(input_topo.non_manifold_edges > 0)
+      unreadable("INPUT '" + options.input + "' is not a surface: " + std::to_string(input_topo.non_manifold_edges) +
+                 " edges are shared by more than two faces");
+    return 0;
+  }
 
   std::vector<Point> points;
   std::vector<Polygon> polygons;

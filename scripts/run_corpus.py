@@ -163,8 +163,11 @@ def count_faces(path):
 def run_process(command, timeout, cwd=None):
     """(returncode or None on timeout, stdout, stderr, seconds); the process group is killed on timeout."""
     start = time.monotonic()
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=cwd,
-                               start_new_session=True)
+    try:
+        process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=cwd,
+                                   start_new_session=True)
+    except OSError as error:
+        return 127, "", "cannot run %s: %s" % (command[0], error), time.monotonic() - start
     try:
         out, err = process.communicate(timeout=timeout)
         code = process.returncode
@@ -236,6 +239,8 @@ def run_one(mesh, name, arguments, cli_options):
                               + message)
         else:
             result.update(status="failed", reason=("exit %d: " % code if code != 1 else "") + message)
+    elif not os.path.isfile(quads):
+        result.update(status="INVALID", reason="exit 0, but no quad mesh was written")
     else:
         checker = [os.path.abspath(arguments.checker), os.path.abspath(mesh), quads,
                    "--min-area-ratio", repr(arguments.min_area_ratio),
@@ -252,12 +257,44 @@ def run_one(mesh, name, arguments, cli_options):
         if check_code == 0:
             result.update(status="ok")
         elif check_code == 1:
-            fails = [line for line in check_out.splitlines() if "(FAIL" in line]
-            result.update(status="INVALID", reason="; ".join(fails))
+            result.update(status="INVALID", reason=invalid_reason(check_out, result["check"], arguments))
         else:
             result.update(status="unchecked",
                           reason="check_quad_mesh exit %s: %s" % (check_code, last_line(check_err or check_out)))
     return result
+
+
+def invalid_reason(check_out, summary, arguments):
+    """The failed checks of check_quad_mesh, in a few words each."""
+    lines = {line.split(":", 1)[0]: line for line in check_out.splitlines() if "(FAIL" in line}
+    parts = []
+    for name in summary.get("failed", ",".join(lines)).split(","):
+        s = summary
+        if name == "all_quads":
+            parts.append("%s of %s faces not quads" % (s.get("non_quads", "?"), s.get("quads", "?")))
+        elif name == "manifold":
+            value = lines.get(name, "").split(":", 1)[-1].split(" (FAIL")[0]
+            parts.append("not manifold: " + ", ".join(item.strip() for item in value.split(",")
+                                                       if not item.strip().startswith("0 ")))
+        elif name == "components":
+            parts.append("components: input %s, quads %s" % (s.get("input_components", "?"),
+                                                              s.get("quad_components", "?")))
+        elif name == "euler":
+            parts.append("%s closed component(s) open or with another Euler characteristic"
+                         % s.get("euler_mismatches", "?"))
+        elif name == "on_surface":
+            parts.append("a vertex %s bbox diagonal off the surface" % s.get("max_distance", "?"))
+        elif name == "folded":
+            both = s.get("folded_both_diagonals")
+            parts.append("%s folded quad(s)%s" % (s.get("folded", "?"),
+                                                   " (%s along both diagonals)" % both if both is not None else ""))
+        elif name == "area_ratio":
+            parts.append("area ratio %s < %g" % (s.get("area_ratio", "?"), arguments.min_area_ratio))
+        elif name == "hausdorff":
+            parts.append("Hausdorff %s > %g" % (s.get("hausdorff", "?"), arguments.max_hausdorff))
+        else:
+            parts.append(lines.get(name, name))
+    return "; ".join(parts)
 
 
 def cell(text, limit=160):

@@ -733,7 +733,7 @@ int main(int argc, char** argv)
   }
 
   // --- folds --------------------------------------------------------------------
-  std::size_t folded = 0, reversed = 0;
+  std::size_t folded = 0, reversed = 0, folded_both = 0;
   double quad_area = 0;
   for(std::size_t p = 0; p < nq; ++p) {
     const Polygon& q = polygons[p];
@@ -759,21 +759,27 @@ int main(int argc, char** argv)
     const Point centroid = CGAL::centroid(a, b, c, d);
     const auto hit = ref.tree.closest_point_and_primitive(centroid);
     const Vector& n = ref.normals[std::size_t(hit.second - ref.triangles.cbegin())];
+    bool against[4];
     int negative = 0;
-    for(const Vector& s : splits)
-      if(!(s * n > 0))
-        ++negative;
+    for(int k = 0; k < 4; ++k) {
+      against[k] = !(splits[k] * n > 0);
+      negative += against[k] ? 1 : 0;
+    }
     if(negative > 0)
       ++folded;
+    if((against[0] || against[1]) && (against[2] || against[3]))
+      ++folded_both;  // no triangulation of the quad faces the right way
     if(negative == 4)
       ++reversed;
   }
   {
     std::ostringstream value;
-    value << folded << " of " << nq << " quads have a triangle (of either diagonal) against the input normal, "
-          << reversed << " of them entirely";
+    value << folded << " of " << nq << " quads have a triangle (of either diagonal) against the input normal: "
+          << reversed << " reversed, " << folded_both << " along both diagonals, " << folded - folded_both
+          << " along one diagonal only (a dart, or a corner near 180 degrees)";
     report.line("folded", value.str(), folded == 0);
     report.add("folded", folded);
+    report.add("folded_both_diagonals", folded_both);
   }
 
   // --- area covered -----------------------------------------------------------------

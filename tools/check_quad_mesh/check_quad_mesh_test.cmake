@@ -109,11 +109,11 @@ check(triangles_as_quads cube.off cube_triangles_as_quads.off "" 1
       "summary valid=0 failed=all_quads ")
 check(reversed_quads cube.off cube_quads_reversed.off "" 1
       "manifold: [^\n]*\\(ok\\)"
-      "folded: 6 of 6 quads [^\n]*, 6 of them entirely \\(FAIL"
+      "folded: 6 of 6 quads [^\n]*: 6 reversed, 6 along both diagonals, 0 along one diagonal only [^\n]*\\(FAIL"
       "summary valid=0 failed=folded ")
 check(one_quad_flipped cube.off cube_one_quad_flipped.off "" 1
       "manifold: 0 non-manifold edges, 4 edges with inconsistent orientation[^\n]*\\(FAIL"
-      "folded: 1 of 6 quads [^\n]*, 1 of them entirely \\(FAIL")
+      "folded: 1 of 6 quads [^\n]*: 1 reversed, 1 along both diagonals, 0 along one [^\n]*\\(FAIL")
 check(moved_quads cube.off cube_quads_moved.off "" 1
       "on_surface: [^\n]* 4 vertices beyond [^\n]*\\(FAIL"
       "hausdorff: [^\n]*\\(FAIL")
@@ -124,7 +124,7 @@ check(missing_component two_cubes.off cube_quads.off "" 1
       "components: input 2, quads 1 \\(FAIL: input component 1 \\(12 triangles\\) has 0 quad components"
       "hausdorff: [^\n]*\\(FAIL")
 check(dart grid_dart.off grid_dart.off "" 1
-      "folded: 1 of 4 quads [^\n]*, 0 of them entirely \\(FAIL")
+      "folded: 1 of 4 quads [^\n]*: 0 reversed, 0 along both diagonals, 1 along one diagonal only [^\n]*\\(FAIL")
 check(quarter_covered square.off grid_quarter.off "--min-area-ratio 0.98 --max-hausdorff 0.01" 1
       "area_ratio: 0.25 [^\n]*\\(FAIL: bar >= 0.98"
       "hausdorff: [^\n]*\\(FAIL")
@@ -139,3 +139,18 @@ check(missing_file cube.off no_such_file.off "" 2 "QUADS '[^']*no_such_file.off'
 file(WRITE "${WORK_DIR}/garbage.off" "this is not a mesh\n")
 check(garbage_input garbage.off cube_quads.off "" 2 "INPUT '[^']*garbage.off' is not a readable mesh")
 check(unknown_option cube.off cube_quads.off "--frobnicate 3" 2 "unknown option --frobnicate")
+
+# --input-only: status 0 for a surface, 2 for three triangles on one edge.
+function(check_input_only name input expected_status regex)
+  execute_process(COMMAND "${CHECKER}" "${WORK_DIR}/${input}" --input-only
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status STREQUAL "${expected_status}" OR NOT "${out}${err}" MATCHES "${regex}")
+    message(FATAL_ERROR "${name}: exit status '${status}' (expected ${expected_status}), "
+                        "output expected to match '${regex}':\n${out}${err}")
+  endif()
+  message(STATUS "${name}: ok")
+endfunction()
+check_input_only(input_only_cube cube.off 0 "12 triangles, 1 component\\(s\\), 1 closed")
+file(WRITE "${WORK_DIR}/book.off"
+     "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n")
+check_input_only(input_only_book book.off 2 "is not a surface: 1 edges are shared by more than two faces")

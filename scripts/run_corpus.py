@@ -313,7 +313,9 @@ def print_table(results):
             irregular = c["irregular_interior"] + (
                 "+" + c["irregular_boundary"] if c.get("irregular_boundary", "0") != "0" else "")
         coverage = c.get("sharp_coverage", "")
-        if coverage not in ("", "-"):
+        if c.get("sharp_edges") == "0":
+            coverage = "no sharp edge"
+        elif coverage not in ("", "-"):
             coverage = "%.1f%% of %s edges" % (100 * float(coverage), c.get("sharp_edges", "?"))
         elif coverage == "-":
             coverage = ""
@@ -332,7 +334,7 @@ def main():
     os.makedirs(arguments.out, exist_ok=True)
     cli_options = shlex.split(arguments.options)
     if arguments.sharp_edges is not None:
-        cli_options += ["--sharp-edges", repr(arguments.sharp_edges)]
+        cli_options += ["--sharp-edges", "%g" % arguments.sharp_edges]
     names = output_names(meshes)
     lock = threading.Lock()
     done = [0]

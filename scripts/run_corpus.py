@@ -32,7 +32,7 @@ It prints one Markdown table on standard output, then a line of totals; the
 progress goes to standard error. The exit status is 0 when every mesh is ok or
 refused, 1 otherwise.
 
-Defaults: the executables of build/ in this repository, --out corpus_output,
+Defaults: the executables of build/ in this repository, --out output/corpus,
 the checker's bars --min-area-ratio 0.98 and --max-hausdorff 0.01. With
 --planarize among the options, quad vertices may lie 5% of the mean quad edge
 off the surface (otherwise 1e-6 of the bounding-box diagonal). --sharp-edges D
@@ -71,7 +71,8 @@ def parse_arguments():
                         help="the checker (default: build/tools/check_quad_mesh/check_quad_mesh)")
     parser.add_argument("--jobs", type=int, default=1, help="meshes run at the same time (default 1)")
     parser.add_argument("--timeout", type=float, default=300, help="seconds per run before it is killed (default 300)")
-    parser.add_argument("--out", default="corpus_output", help="folder of the outputs and logs (default corpus_output)")
+    parser.add_argument("--out", default=os.path.join("output", "corpus"),
+                        help="folder of the outputs and logs (default output/corpus)")
     parser.add_argument("--options", default="", help="more options for design_polyvector_field, one string")
     parser.add_argument("--sharp-edges", type=float, default=None, metavar="D",
                         help="give --sharp-edges D to the pipeline, and measure the sharp-edge coverage")

@@ -224,7 +224,8 @@ def run_one(mesh, name, arguments, cli_options):
             signal_name = signal.Signals(-code).name
         except ValueError:
             signal_name = "signal %d" % -code
-        result.update(status="crashed", reason=signal_name + (": " + message if message else ""))
+        said = message or last_line(stdout)  # e.g. a solver library's last words
+        result.update(status="crashed", reason=signal_name + (" after: " + said if said else ""))
     elif code != 0:
         if code == 1 and message.startswith("mesh '"):
             # The pipeline says the file is not a surface: does an independent reader agree?

@@ -306,7 +306,7 @@ def cell(text, limit=160):
 
 def print_table(results):
     print("| mesh | faces | status | reason | seconds | quads | irregular vertices | area ratio | "
-          "Hausdorff/diag | sharp-edge coverage |")
+          "Hausdorff/diag | sharp-edge coverage (and boundary) |")
     print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|")
     for r in results:
         c = r["check"]
@@ -321,6 +321,9 @@ def print_table(results):
             coverage = "%.1f%% of %s edges" % (100 * float(coverage), c.get("sharp_edges", "?"))
         elif coverage == "-":
             coverage = ""
+        if c.get("boundary_edges", "0") != "0":
+            coverage += ("; " if coverage else "") + "boundary %.1f%% of %s edges" % (
+                100 * float(c.get("boundary_coverage", "nan")), c["boundary_edges"])
         print("| %s | %s | %s | %s | %.1f | %s | %s | %s | %s | %s |" % (
             cell(os.path.basename(r["mesh"])), "" if r["faces"] is None else r["faces"],
             "**%s**" % r["status"] if r["status"] not in ("ok", "refused") else r["status"],

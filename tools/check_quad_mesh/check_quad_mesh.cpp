@@ -87,8 +87,9 @@ const char* const usage_text =
     "                       [--distance-tolerance-edge F] [--min-area-ratio R] [--max-hausdorff H]\n"
     "       check_quad_mesh INPUT --input-only\n"
     "  INPUT, QUADS              meshes (.off, .obj, .ply, .stl); QUADS is checked against INPUT\n"
-    "  --sharp-edges DEGREES     also measure how well the quad edges follow the input edges\n"
-    "                            whose dihedral angle exceeds DEGREES (reported, not a check)\n"
+    "  --sharp-edges DEGREES     also measure how well the quad edges follow the interior input\n"
+    "                            edges whose dihedral angle exceeds DEGREES (reported, not a check;\n"
+    "                            the boundary edges are always measured)\n"
     "  --distance-tolerance T    a quad vertex may lie T bbox diagonals off the input (default 1e-6)\n"
     "  --distance-tolerance-edge F  instead, F mean quad edge lengths (e.g. 0.05 for planarized meshes)\n"
     "  --min-area-ratio R        fail when quad area / input area < R (default 0: reported only)\n"
@@ -574,8 +575,12 @@ int main(int argc, char** argv)
   const bool soup_is_mesh = !polygons.empty() && PMP::is_polygon_soup_a_polygon_mesh(polygons);
   bool mesh_valid = false;
   if(soup_is_mesh) {
+    // Points no face uses would be isolated vertices: counted in the statistics, not here.
+    std::vector<Point> used_points = points;
+    std::vector<Polygon> renumbered = polygons;
+    PMP::remove_isolated_points_in_polygon_soup(used_points, renumbered);
     Mesh quad_mesh;
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, quad_mesh);
+    PMP::polygon_soup_to_polygon_mesh(used_points, renumbered, quad_mesh);
     mesh_valid = CGAL::is_valid_polygon_mesh(quad_mesh);
   }
   {
@@ -831,48 +836,64 @@ int main(int argc, char** argv)
               "max distance of an input vertex or face centroid to the quads: " + format(hausdorff) + " bbox diagonal",
               hausdorff <= options.max_hausdorff, "bar <= " + format(options.max_hausdorff));
 
-  // --- sharp edges -------------------------------------------------------------------
-  std::string sharp_count = "-", sharp_coverage = "-", sharp_edges_covered = "-";
-  if(options.sharp_degrees >= 0) {
-    auto is_sharp = ref.mesh.add_property_map<edge_descriptor, bool>("e:check_sharp", false).first;
-    PMP::detect_sharp_edges(ref.mesh, options.sharp_degrees, is_sharp);
-    std::vector<Segment> quad_edges;
-    for(const Soup_edge& e : topo.edges)
-      if(is_finite(points[e.a]) && is_finite(points[e.b]) && points[e.a] != points[e.b])
-        quad_edges.emplace_back(points[e.a], points[e.b]);
-    const double tolerance = 0.01 * mean_edge;
+  // --- sharp edges and boundary edges on quad edges -------------------------------
+  // Each input edge is sampled at 5 interior points; a sample is covered when
+  // a quad edge (a segment) passes within 1% of the mean quad edge length.
+  std::vector<Segment> quad_edges;
+  for(const Soup_edge& e : topo.edges)
+    if(is_finite(points[e.a]) && is_finite(points[e.b]) && points[e.a] != points[e.b])
+      quad_edges.emplace_back(points[e.a], points[e.b]);
+  Segment_tree edge_tree(quad_edges.cbegin(), quad_edges.cend());
+  if(!quad_edges.empty())
+    edge_tree.accelerate_distance_queries();
+  const double coverage_tolerance = 0.01 * mean_edge;
+  struct Coverage {
+    std::size_t edges = 0, samples = 0, covered = 0, edges_covered = 0;
+    double fraction() const { return samples > 0 ? double(covered) / double(samples) : 1.0; }
+  };
+  auto coverage_of = [&](auto&& selected) {
+    Coverage c;
     const int samples_per_edge = 5;
-    std::size_t sharp = 0, samples = 0, covered = 0, edges_covered = 0;
-    Segment_tree edge_tree(quad_edges.cbegin(), quad_edges.cend());
-    if(!quad_edges.empty())
-      edge_tree.accelerate_distance_queries();
     for(edge_descriptor e : edges(ref.mesh)) {
-      if(!is_sharp[e])
+      if(!selected(e))
         continue;
-      ++sharp;
+      ++c.edges;
       const Point& p = ref.mesh.point(source(halfedge(e, ref.mesh), ref.mesh));
       const Point& q = ref.mesh.point(target(halfedge(e, ref.mesh), ref.mesh));
       std::size_t here = 0;
       for(int k = 0; k < samples_per_edge; ++k) {
-        const double t = (k + 0.5) / samples_per_edge;
-        const Point s = p + t * (q - p);
-        ++samples;
-        if(!quad_edges.empty() && std::sqrt(edge_tree.squared_distance(s)) <= tolerance)
+        const Point sample = p + ((k + 0.5) / samples_per_edge) * (q - p);
+        ++c.samples;
+        if(!quad_edges.empty() && std::sqrt(edge_tree.squared_distance(sample)) <= coverage_tolerance)
           ++here;
       }
-      covered += here;
+      c.covered += here;
       if(here == std::size_t(samples_per_edge))
-        ++edges_covered;
+        ++c.edges_covered;
     }
-    const double fraction = samples > 0 ? double(covered) / double(samples) : 1.0;
+    return c;
+  };
+  auto coverage_text = [&](const Coverage& c) {
     std::ostringstream value;
-    value << sharp << " input edges above " << format(options.sharp_degrees) << " degrees; "
-          << format(100 * fraction) << "% of their " << samples << " samples within " << format(tolerance)
-          << " (1% of the mean quad edge) of a quad edge; " << edges_covered << " edges covered entirely";
-    report.info("sharp_edges", value.str());
-    sharp_count = std::to_string(sharp);
-    sharp_coverage = format(fraction);
-    sharp_edges_covered = std::to_string(edges_covered);
+    value << format(100 * c.fraction()) << "% of their " << c.samples << " samples within "
+          << format(coverage_tolerance) << " (1% of the mean quad edge) of a quad edge; " << c.edges_covered
+          << " edges covered entirely";
+    return value.str();
+  };
+  const Coverage boundary = coverage_of([&](edge_descriptor e) { return CGAL::is_border(e, ref.mesh); });
+  report.info("boundary_edges", std::to_string(boundary.edges) + " input boundary edges; " + coverage_text(boundary));
+  std::string sharp_count = "-", sharp_coverage = "-", sharp_edges_covered = "-";
+  if(options.sharp_degrees >= 0) {
+    // detect_sharp_edges() also marks the boundary: only interior edges count here.
+    auto is_sharp = ref.mesh.add_property_map<edge_descriptor, bool>("e:check_sharp", false).first;
+    PMP::detect_sharp_edges(ref.mesh, options.sharp_degrees, is_sharp);
+    const Coverage sharp =
+        coverage_of([&](edge_descriptor e) { return is_sharp[e] && !CGAL::is_border(e, ref.mesh); });
+    report.info("sharp_edges", std::to_string(sharp.edges) + " interior input edges above " +
+                                   format(options.sharp_degrees) + " degrees; " + coverage_text(sharp));
+    sharp_count = std::to_string(sharp.edges);
+    sharp_coverage = format(sharp.fraction());
+    sharp_edges_covered = std::to_string(sharp.edges_covered);
   }
 
   // --- statistics ----------------------------------------------------------------------
@@ -927,7 +948,8 @@ int main(int argc, char** argv)
             << " irregular_interior=" << irregular_interior << " irregular_boundary=" << irregular_boundary
             << " area_ratio=" << format(area_ratio) << " hausdorff=" << format(hausdorff)
             << " sharp_edges=" << sharp_count << " sharp_coverage=" << sharp_coverage
-            << " sharp_edges_covered=" << sharp_edges_covered << " mean_edge=" << format(mean_edge);
+            << " sharp_edges_covered=" << sharp_edges_covered << " boundary_edges=" << boundary.edges
+            << " boundary_coverage=" << format(boundary.fraction()) << " mean_edge=" << format(mean_edge);
   for(const auto& [key, value] : report.summary)
     std::cout << " " << key << "=" << value;
   std::cout << std::endl;

@@ -93,13 +93,15 @@ check(valid_cube cube.off cube_quads.off "--sharp-edges 40" 0
       "folded: 0 of 6 quads"
       "area_ratio: 1 \\("
       "hausdorff: [^\n]*: 0 bbox diagonal \\(ok"
-      "sharp_edges: 12 input edges above 40 degrees; 100% of their 60 samples [^\n]*; 12 edges covered entirely"
+      "boundary_edges: 0 input boundary edges"
+      "sharp_edges: 12 interior input edges above 40 degrees; 100% of their 60 samples [^\n]*; 12 edges covered entirely"
       "statistics: 6 faces, 8 vertices \\(0 on the boundary\\), 8 irregular interior vertices"
       "summary valid=1 failed=none quads=6 non_quads=0 vertices=8 input_components=1 quad_components=1 irregular_interior=8 irregular_boundary=0 area_ratio=1 hausdorff=0 sharp_edges=12 sharp_coverage=1 sharp_edges_covered=12")
 # Valid: a 2x2 grid on a square. Boundary vertices at the corners (one quad,
 # 90 degrees) and along the sides (two quads, 180 degrees) are regular.
 check(valid_grid square.off grid.off "--min-area-ratio 0.98" 0
       "euler: 0 closed component\\(s\\) compared, 0 mismatch\\(es\\); 1 open component\\(s\\), 0 with another chi"
+      "boundary_edges: 4 input boundary edges; 100% of their 20 samples [^\n]*; 4 edges covered entirely"
       "statistics: 4 faces, 9 vertices \\(8 on the boundary\\), 0 irregular interior vertices \\(valence != 4\\), 0 irregular boundary vertices"
       "summary valid=1 ")
 
@@ -127,6 +129,9 @@ check(dart grid_dart.off grid_dart.off "" 1
       "folded: 1 of 4 quads [^\n]*: 0 reversed, 0 along both diagonals, 1 along one diagonal only [^\n]*\\(FAIL")
 check(quarter_covered square.off grid_quarter.off "--min-area-ratio 0.98 --max-hausdorff 0.01" 1
       "area_ratio: 0.25 [^\n]*\\(FAIL: bar >= 0.98"
+      "manifold: [^\n]*\\(ok\\)"
+      "boundary_edges: 4 input boundary edges; 30% of their 20 samples"
+      "statistics: [^\n]*, 5 unreferenced points"
       "hausdorff: [^\n]*\\(FAIL")
 # A planarized-style tolerance: the moved cube passes "on_surface" within
 # one mean quad edge, and still fails the Hausdorff bar.

@@ -914,7 +914,8 @@ TEST(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
   }
   EXPECT_EQ(comb_sum, field_sum);  // Poincare-Hopf is kept
   EXPECT_EQ(comb_singular, r.singular_vertices);
-  EXPECT_EQ(comb_singular, sings.size() - 2 * r.cancelled_singularity_pairs - r.merged_singularity_pairs);
+  EXPECT_EQ(comb_singular,
+            sings.size() - 2 * r.cancelled_singularity_pairs - r.merged_singularity_pairs + r.split_singularities);
 
   auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
   PVF::Integer_grid_map_result map;
@@ -944,10 +945,10 @@ TEST(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
   }
   EXPECT_EQ(mismatched, 0u);
   EXPECT_EQ(off_integer, 0.0);
-  std::printf("[ bumpy, 60 random constraints ] %zu field singularities -> %zu (cancelled %zu, merged %zu, moved %zu); "
-              "%zu flipped faces\n",
+  std::printf("[ bumpy, 60 random constraints ] %zu field singularities -> %zu (cancelled %zu, merged %zu, moved %zu, "
+              "split %zu); %zu flipped faces\n",
               sings.size(), r.singular_vertices, r.cancelled_singularity_pairs, r.merged_singularity_pairs,
-              r.moved_singularities, map.flipped_faces);
+              r.moved_singularities, r.split_singularities, map.flipped_faces);
   EXPECT_EQ(PVF::comb_frame_field(bundle, field, separated, PVF::parameters::singularity_cancellation_distance(-1.0)),
             PVF::Error_code::INVALID_PARAMETER);
 }

@@ -780,7 +780,10 @@ int main(int argc, char** argv)
     value << folded << " of " << nq << " quads have a triangle (of either diagonal) against the input normal: "
           << reversed << " reversed, " << folded_both << " along both diagonals, " << folded - folded_both
           << " along one diagonal only (a dart, or a corner near 180 degrees)";
-    report.line("folded", value.str(), folded == 0);
+    // A quad is folded when neither diagonal splits it into two triangles that face
+    // the surface's side; a dart (a corner near or past 180 degrees, folded along
+    // one diagonal only) is a poor quad, not a fold, and is reported.
+    report.line("folded", value.str(), folded_both == 0);
     report.add("folded", folded);
     report.add("folded_both_diagonals", folded_both);
   }

@@ -138,10 +138,12 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     const PVF::Integer_grid_map_result& r = param.result;
     std::cout << "parametrization edge length " << r.target_edge_length << " (mean edge " << r.mean_edge_length << "); "
               << r.comb.singular_vertices << " singular vertices on integer points";
-    if(r.comb.cancelled_singularity_pairs + r.comb.merged_singularity_pairs + r.comb.moved_singularities > 0)
+    if(r.comb.cancelled_singularity_pairs + r.comb.merged_singularity_pairs + r.comb.moved_singularities +
+         r.comb.split_singularities > 0)
       std::cout << " (of the field's singularities closer than a quad: " << r.comb.cancelled_singularity_pairs
                 << " opposite pairs cancelled, " << r.comb.merged_singularity_pairs << " pairs merged, "
-                << r.comb.moved_singularities << " moved apart)";
+                << r.comb.moved_singularities << " moved apart; " << r.comb.split_singularities
+                << " quarter turns split off vertices of valence below 3 or above 6)";
     std::cout << ", " << r.comb.seam_curves << " seam curves ("
               << r.comb.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
               << " flipped faces";

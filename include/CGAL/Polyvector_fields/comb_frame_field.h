@@ -47,6 +47,7 @@ struct Comb_result
   std::size_t cancelled_singularity_pairs = 0;  ///< pairs of opposite singularities closer than `singularity_cancellation_distance`, cancelled
   std::size_t merged_singularity_pairs = 0;     ///< close pairs merged into one singular vertex of valence 3 to 6
   std::size_t moved_singularities = 0;          ///< singularities moved away from a close one of the same sign (two +1: one vertex of valence 2 otherwise)
+  std::size_t split_singularities = 0;          ///< quarter turns split off a singular vertex whose valence would be below 3 or above 6 (each a new singular vertex)
   std::size_t cut_edges = 0;           ///< interior edges of the cut graph (the seams)
   std::size_t boundary_edges = 0;      ///< boundary edges (always in the cut)
   std::size_t seam_curves = 0;         ///< maximal seam paths between nodes of the cut graph
@@ -264,7 +265,9 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///     \cgalParamDescription{singular vertices closer than this, along mesh edges, are handled
 ///                           pair by pair, the closest first: opposite indices cancel, a pair whose
 ///                           merged index makes a quad vertex of valence 3 to 6 merges, any other
-///                           pair (two of index 1/4) is moved apart. The index moves by whole quarter
+///                           pair (two of index 1/4) is moved apart. Before that, a singular vertex
+///                           of index above 1/4 or below -1/2 (a quad vertex of valence below 3 or
+///                           above 6) is split into several, a quarter turn at a time. The index moves by whole quarter
 ///                           turns of the matching along the shortest edge path, as with the period
 ///                           jumps of mixed-integer quadrangulation. The map places every singular
 ///                           vertex on an integer point: two closer than one quad would meet there,

@@ -81,15 +81,19 @@ Error_code refine_for_quad_size(TriangleMesh& tm, double quad_size, std::vector<
 
   const double max_length = 2 * quad_size;
   const VPM vpm = get(CGAL::vertex_point, tm);
-  std::vector<typename GT::edge_descriptor> long_edges;
-  for(auto e : edges(tm))
-  {
-    const auto h = halfedge(e, tm);
-    if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm))))) >
-       max_length)
-      long_edges.push_back(e);
-  }
-  if(long_edges.empty())
+  auto long_edges = [&]() {
+    std::vector<typename GT::edge_descriptor> found;
+    for(auto e : edges(tm))
+    {
+      const auto h = halfedge(e, tm);
+      if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm))))) >
+         max_length)
+        found.push_back(e);
+    }
+    return found;
+  };
+  std::vector<typename GT::edge_descriptor> to_split = long_edges();
+  if(to_split.empty())
     return Error_code::SUCCESS;
 
   // The faces before: each face of the result lies inside one of them, and the
@@ -101,7 +105,14 @@ Error_code refine_for_quad_size(TriangleMesh& tm, double quad_size, std::vector<
     const auto h = halfedge(f, tm);
     before.emplace_back(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
   }
-  CGAL::Polygon_mesh_processing::split_long_edges(long_edges, max_length, tm);
+  // split_long_edges() splits the edges it is given; the edges it draws across the
+  // faces beside them can be long too, so it is called until none is (each round
+  // at least halves the longest edge of a face, so a few rounds suffice).
+  for(int round = 0; round < 64 && !to_split.empty(); ++round)
+  {
+    CGAL::Polygon_mesh_processing::split_long_edges(to_split, max_length, tm);
+    to_split = long_edges();
+  }
   Tree tree(before.begin(), before.end());
   tree.accelerate_distance_queries();
   std::vector<std::size_t> origin;

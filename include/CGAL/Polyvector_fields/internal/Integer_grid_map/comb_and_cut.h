@@ -211,6 +211,7 @@ Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, dou
   report.cancelled_singularity_pairs = separation.cancelled;
   report.merged_singularity_pairs = separation.merged;
   report.moved_singularities = separation.separated;
+  report.split_singularities = separation.split;
   D.matching_inconsistent = !consistent;
   report.singular_vertices = 0;
   for(std::size_t v = 0; v < V; ++v)

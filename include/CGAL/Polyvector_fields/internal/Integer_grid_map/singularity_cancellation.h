@@ -65,6 +65,9 @@ int matching_holonomy(const CornerMesh& M, const std::vector<int>& shift, std::s
 // - any other pair (two +1, say: merged, a vertex of valence 2) is separated: one of
 //   them moves to the closest interior vertex at least `distance` from every other
 //   singular vertex, within 3 `distance`.
+// Before the pairs, a vertex whose index would make a quad vertex of valence below
+// 3 or above 6 (k > 1 or k < -2) is split: it gives one quarter turn at a time to
+// such a vertex.
 // An index moves from v to w by |k| quarter turns on the corners of the shortest
 // edge path through interior vertices; the vertices inside the path keep their
 // index (one quarter turn comes in, the same goes out). `shift` and `index` are
@@ -72,7 +75,7 @@ int matching_holonomy(const CornerMesh& M, const std::vector<int>& shift, std::s
 // matching does not agree with the indices.
 struct Singularity_separation
 {
-  std::size_t cancelled = 0, merged = 0, separated = 0;
+  std::size_t cancelled = 0, merged = 0, separated = 0, split = 0;
 };
 
 template <typename CornerMesh>
@@ -164,9 +167,9 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
     }
     touched.clear();
   };
-  // Moves index k from `from` to `to` along the path of the last search from `from`.
-  auto transfer = [&](std::size_t from, std::size_t to) {
-    const int k = index[from];
+  // Moves index k (all of from's by default) from `from` to `to` along the path of
+  // the last search from `from`.
+  auto transfer = [&](std::size_t from, std::size_t to, int k) {
     // Along corner c, index(source) -= k and index(target) += k: the holonomy at
     // the source changes by -sign*k, so the corner's shift does.
     for(std::size_t w = to; w != from;)
@@ -177,8 +180,53 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
       w = M.source(c);
     }
     index[to] += k;
-    index[from] = 0;
+    index[from] -= k;
   };
+  // Moves `k` of v's index to the closest interior vertex of index 0 at least
+  // `distance` from every other singular vertex, within 3 `distance`.
+  auto move_away = [&](std::size_t v, int k) {
+    std::vector<std::size_t> others;
+    for(std::size_t w : singular)
+      if(w != v && index[w] != 0)
+        others.push_back(w);
+    std::vector<double> clearance(V, std::numeric_limits<double>::infinity());
+    search(others, 4 * distance, [&](std::size_t w, double d) {
+      clearance[w] = d;
+      return false;
+    });
+    reset();
+    // v itself keeps index - k: it counts as a singular vertex unless that is 0
+    std::size_t target = npos;
+    search({ v }, 3 * distance, [&](std::size_t w, double d) {
+      if(w != v && index[w] == 0 && !M.border_vertex[w] && clearance[w] >= distance &&
+         (index[v] == k || d >= distance))
+      {
+        target = w;
+        return true;
+      }
+      return false;
+    });
+    if(target != npos)
+    {
+      transfer(v, target, k);
+      singular.push_back(target);
+    }
+    reset();
+    return target != npos;
+  };
+
+  // Vertices of a valence below 3 or above 6 (index k > 1 or k < -2) give away
+  // one quarter turn at a time.
+  for(std::size_t i = 0; i < singular.size(); ++i)
+  {
+    const std::size_t v = singular[i];
+    while(index[v] > 1 || index[v] < -2)
+    {
+      if(!move_away(v, index[v] > 0 ? 1 : -1))
+        break;
+      ++report.split;
+    }
+  }
 
   // Close pairs.
   struct Pair
@@ -211,39 +259,15 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
       search({ pair.a }, distance, [&](std::size_t v, double) { return reached = (v == pair.b); });
       if(reached)
       {
-        transfer(pair.a, pair.b);
+        transfer(pair.a, pair.b, index[pair.a]);
         ++(merged == 0 ? report.cancelled : report.merged);
       }
       reset();
       continue;
     }
-    // separate: the distance of every vertex to the other singularities
-    std::vector<std::size_t> others;
-    for(std::size_t v : singular)
-      if(v != pair.a && index[v] != 0)
-        others.push_back(v);
-    std::vector<double> clearance(V, std::numeric_limits<double>::infinity());
-    search(others, 4 * distance, [&](std::size_t v, double d) {
-      clearance[v] = d;
-      return false;
-    });
-    reset();
-    std::size_t target = npos;
-    search({ pair.a }, 3 * distance, [&](std::size_t v, double) {
-      if(v != pair.a && index[v] == 0 && !M.border_vertex[v] && clearance[v] >= distance)
-      {
-        target = v;
-        return true;
-      }
-      return false;
-    });
-    if(target != npos)
-    {
-      transfer(pair.a, target);
-      singular.push_back(target);
+    // separate
+    if(move_away(pair.a, index[pair.a]))
       ++report.separated;
-    }
-    reset();
   }
   return report;
 }

@@ -15,8 +15,9 @@
 //           disk), 1 a closed icosahedron, 2 a tetrahedron, 3 the 12-triangle
 //           box (every vertex singular); bit 2: the mesh Loop-subdivided once;
 //   bytes 1, 2: the grid's size;
-//   byte 3: the quad size, the mean edge length times 2^((b - 128) / 32)
-//           (1/16 .. 16 times);
+//   byte 3: the quad size, the mean edge length times 2^(b / 42.5 - 2)
+//           (1/4 .. 16 times: smaller quads make quad meshes too large for
+//           a fast execution);
 //   byte 4: the stiffening rounds, b % 8;
 //   byte 5: the number of constrained faces, 1 + b % 6;
 //   then, per vertex, 3 bytes: a displacement of up to 0.2 of the mean edge
@@ -27,8 +28,9 @@
 // has seam and singularity residuals exactly 0 under its own transitions; a
 // quad mesh returned with SUCCESS is not empty, has quads only and finite
 // points; extract_quad_mesh() never says NOT_AN_INTEGER_GRID_MAP of a map
-// that compute_integer_grid_map() returned with SUCCESS and without flipped
-// faces; planarize_quad_mesh() leaves finite points.
+// that compute_integer_grid_map() returned with SUCCESS, without flipped
+// faces and without singular points of valence 2 or less; planarize_quad_mesh()
+// leaves finite points.
 
 #include "fuzz_support.h"
 
@@ -97,7 +99,7 @@ PVF_FUZZ_TARGET(meshing)
   Bytes in{ data, size };
   Mesh tm = base_mesh(in);
   const double mean = mean_edge(tm);
-  const double h = mean * std::exp2((double(in.get()) - 128) / 32);
+  const double h = mean * std::exp2(double(in.get()) / 42.5 - 2);
   const std::size_t rounds = in.get() % 8;
   const std::size_t constrained = 1 + in.get() % 6;
   for(auto v : vertices(tm))
@@ -157,7 +159,14 @@ PVF_FUZZ_TARGET(meshing)
   Mesh quads;
   PVF::Quad_extraction_result extraction;
   const Error_code quad_code = PVF::extract_quad_mesh(bundle, boost::make_assoc_property_map(uv), map, quads, extraction);
-  if(map.flipped_faces == 0)
+  // Singular points of valence 2 or less (index >= 2/4, e.g. at the corners of
+  // a tetrahedron) make cells that share two edges: the extraction refuses
+  // them (an open limitation, FOUND_BUGS.md), so the claim is only made
+  // without them.
+  bool low_valence = false;
+  for(int k : comb.data().index)
+    low_valence = low_valence || k >= 2;
+  if(map.flipped_faces == 0 && !low_valence)
     PVF_FUZZ_CHECK(quad_code != Error_code::NOT_AN_INTEGER_GRID_MAP,
                    "a checked map without flips refused by the extraction: " + extraction.diagnostic);
   if(quad_code != Error_code::SUCCESS)

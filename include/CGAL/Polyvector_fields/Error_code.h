@@ -48,7 +48,9 @@ enum class Error_code
   NOT_AN_INTEGER_GRID_MAP,       ///< a uv map is missing or not seamless: a transition that is not a grid symmetry, or a vertex of non-zero index off the integer grid
   UNREPAIRABLE_FOLD_OVER,        ///< a uv map has flipped or degenerate triangles that the local repair could not remove
   NON_QUAD_FACE,                 ///< a face of a polygon mesh is not a quadrilateral
-  DID_NOT_CONVERGE               ///< an iterative method stopped at its iteration limit before reaching its target
+  DID_NOT_CONVERGE,              ///< an iterative method stopped at its iteration limit before reaching its target
+  MAP_CHECK_FAILED,              ///< a computed integer-grid map failed the check made before it is returned: a seam not exact under its transition, a singular vertex off the integer grid, or transitions that do not compose to the identity around a regular vertex
+  NO_INTEGER_CELL                ///< a connected component of the surface has no whole cell of the integer-grid map: the quad size is larger than that part of the surface
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -87,6 +89,8 @@ inline const char* get_error_message(Error_code code)
     case Error_code::UNREPAIRABLE_FOLD_OVER: return "the uv map has fold-overs that could not be repaired";
     case Error_code::NON_QUAD_FACE: return "the mesh has a face that is not a quadrilateral";
     case Error_code::DID_NOT_CONVERGE: return "the iteration limit was reached before the target";
+    case Error_code::MAP_CHECK_FAILED: return "the computed integer-grid map failed its check (a seam not exact, a singular vertex off the integer grid, or transitions that do not close up around a regular vertex)";
+    case Error_code::NO_INTEGER_CELL: return "the quad size is larger than the surface: a connected component has no whole integer cell, so no quad";
   }
   return "unknown error";
 }

@@ -84,20 +84,35 @@ public:
   /// does nothing: the model's `factor()` makes both steps.
   bool analyze(const Matrix&) { return true; }
 
-  /// copies `A` into the model's `Matrix` and calls its `factor()`.
+  /// copies `A` into the model's `Matrix` and calls its `factor()`. A matrix
+  /// with no row (a system without unknowns) is factored trivially.
   bool factorize(const Matrix& A)
   {
+    m_empty = (A.rows() == 0 && A.cols() == 0);
+    m_rows = A.rows();
+    m_factored = false;
+    if(m_empty)
+      return (m_factored = true);
     m_matrix.reset(new typename SolverTraits::Matrix(std::size_t(A.rows()), std::size_t(A.cols())));
     for(Eigen::Index k = 0; k < A.outerSize(); ++k)
       for(typename Matrix::InnerIterator it(A, k); it; ++it)
         m_matrix->add_coef(it.row(), it.col(), it.value());
     typename SolverTraits::NT D;
-    return m_solver.factor(*m_matrix, D);
+    m_factored = m_solver.factor(*m_matrix, D);
+    return m_factored;
   }
 
-  /// solves for each column of `B` with the model's `linear_solver()`.
+  /// solves for each column of `B` with the model's `linear_solver()`; fails
+  /// if the matrix was not factored or `B` has not its number of rows.
   bool solve(const Dense_matrix& B, Dense_matrix& X)
   {
+    if(!m_factored || B.rows() != m_rows)
+      return false;
+    if(m_empty)
+    {
+      X.resize(0, B.cols());
+      return true;
+    }
     typename SolverTraits::Vector b(B.rows()), x(B.rows());
     X.resize(B.rows(), B.cols());
     for(Eigen::Index j = 0; j < B.cols(); ++j)
@@ -115,6 +130,9 @@ public:
 private:
   SolverTraits m_solver;
   std::unique_ptr<typename SolverTraits::Matrix> m_matrix;  // factor() may keep a pointer to it
+  Eigen::Index m_rows = 0;
+  bool m_empty = false;     // a system without unknowns
+  bool m_factored = false;  // the last factorize() succeeded
 };
 
 } // namespace Polyvector_fields

@@ -35,6 +35,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -91,10 +92,11 @@ struct Integer_grid_map_result
   double continuous_energy = 0;           ///< sum A_f |grad uv - J*_f|^2 of the continuous (unrounded) optimum, unit weights
   double rounded_energy = 0;              ///< the same energy for the output
   double energy_ratio = 0;                ///< rounded / continuous
-  double max_seam_residual = 0;           ///< worst |uv_B - (R^r uv_A + t)| over cut-edge endpoints, t the nearest integer vector (output)
-  double max_seam_residual_before_snapping = 0;  ///< the same before the values are snapped to a dyadic grid
+  double max_seam_residual = 0;           ///< worst |uv_B - (R^r uv_A + t)| over interior edge endpoints, (r, t) the edge's transition in `seam_transitions` (output): 0 on success
+  double max_seam_residual_before_snapping = 0;  ///< before the values are snapped to a dyadic grid: the same with the edge's combed rotation and `t` the nearest integer vector (0 off the cut)
   double max_singularity_residual = 0;    ///< worst distance of a singular corner to the integer grid (output)
   std::size_t inconsistencies = 0;        ///< internal checks that failed (expected 0)
+  std::string diagnostic;                 ///< empty on success; for `MAP_CHECK_FAILED`, the check that failed and where
   // times in seconds
   double time_comb = 0;           ///< the tangent bundle (when a mesh is given), matching, singularities, combing, cut, seam curves (0 when a comb is given)
   double time_reduction = 0;      ///< sectors, seam relations, exact elimination over Z[i]
@@ -183,10 +185,10 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 
   // output: snapped to a dyadic grid, so that seams and singularities are exact
   t = std::chrono::steady_clock::now();
-  internal::write_snapped_map(M, D, R, S, nx, m, y, uv_map, result);
+  code = internal::write_snapped_map(M, D, R, S, nx, m, y, uv_map, result);
   result.time_output = internal::seconds_since(t);
   result.time_total = internal::seconds_since(start);
-  return Error_code::SUCCESS;
+  return code;
 }
 
 /// \ingroup PkgPolyvectorFieldsParametrization
@@ -296,7 +298,12 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///          of its range (`target_edge_length <= 0`, `minimum_frame_angle`, `stiffening_factor`);
 ///          `NOT_A_FRAME_FIELD` or `ZERO_FRAME` as `comb_frame_field()`; `SOLVER_FAILURE` if a factorization
 ///          or a solve fails (also if the seam relations could not be eliminated over the Gaussian integers,
-///          which no test mesh has shown). `uv_map` is written only on success; the mesh is never changed.
+///          which no test mesh has shown); `MAP_CHECK_FAILED` if the computed map fails its final check
+///          (`result.diagnostic` says which part): before it is returned, the map is checked exactly from its
+///          values and `result.seam_transitions` alone: every seam exact under its transition, the two
+///          sides of every edge inverse, every singular vertex on an integer point, and the transitions
+///          around every interior regular vertex composing to the identity. `uv_map` is written only on
+///          success; the mesh is never changed.
 ///
 /// \sa `comb_frame_field()`, `extract_quad_mesh()`, `IO::write_integer_grid_map_OBJ()`
 template <typename Mesh_or_bundle, typename CoefficientMap, typename UVMap,

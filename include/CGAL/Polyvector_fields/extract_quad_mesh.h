@@ -63,6 +63,8 @@ struct Quad_extraction_result
   std::size_t non_quad_cells = 0;         ///< closed cells with other than 4 corners (dropped; expected 0)
   std::size_t split_vertices = 0;         ///< vertices duplicated because their kept faces formed several fans
   std::size_t irregular_vertices = 0;     ///< interior output vertices of valence != 4
+  std::size_t components = 0;             ///< connected components of the input mesh (through its edges)
+  std::size_t components_without_cells = 0;  ///< of which components where the map has no whole integer cell (`NO_INTEGER_CELL`)
   std::size_t inconsistencies = 0;        ///< internal checks that failed (expected 0)
   std::string diagnostic;                 ///< on failure: which check failed
   // times in seconds
@@ -162,8 +164,10 @@ struct Quad_extraction_result
 ///          vertex) or `NON_MANIFOLD_MESH` (a vertex whose faces do not form one fan); `NON_FINITE_VALUE` (a
 ///          coordinate or a uv value); `NOT_AN_INTEGER_GRID_MAP` (no face of positive uv area, a transition
 ///          that is not a grid symmetry, a vertex of non-zero index off the integer grid, or traces that do not
-///          close up: see `result.diagnostic`); `UNREPAIRABLE_FOLD_OVER`. `quad_mesh` is written only on
-///          success; `tm` is never changed.
+///          close up: see `result.diagnostic`); `UNREPAIRABLE_FOLD_OVER`; `NO_INTEGER_CELL` if a connected
+///          component of `tm` gets no face, the quad size of the map being larger than that part of the
+///          surface (`result.diagnostic` names the first such component; never an empty or partial quad
+///          mesh). `quad_mesh` is written only on success; `tm` is never changed.
 ///
 /// \sa `compute_integer_grid_map()`, `quad_planarity()`, `planarize_quad_mesh()`, `IO::write_quad_mesh_VTK()`
 template <typename TriangleMesh, typename UVMap, typename PolygonMesh,

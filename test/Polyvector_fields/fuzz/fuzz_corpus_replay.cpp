@@ -26,6 +26,7 @@
 #include "fuzz_off_mesh.cpp"
 #include "fuzz_obj_mesh.cpp"
 #include "fuzz_design.cpp"
+#include "fuzz_meshing.cpp"
 
 #include <algorithm>
 #include <chrono>

@@ -43,6 +43,7 @@ struct Mesh_repair_result
   std::size_t split_vertices = 0;       ///< vertices duplicated to make the surface manifold (non-manifold edges, pinched vertices)
   std::size_t isolated_vertices = 0;    ///< vertices of no face: removed with repair, kept (and counted) without
   std::size_t triangulated_faces = 0;   ///< faces with more than three vertices, split into triangles
+  std::size_t faces_triangulated_in_3d = 0;  ///< of the triangulated faces, the non-planar quads and the non-planar larger faces that are not simple on their coordinate plane
   std::size_t degenerate_faces = 0;     ///< triangles of zero area, removed by edge collapses and flips
   /// for each face of the result, in the order of `faces(tm)`, the 0-based
   /// position in the file of the face it comes from (a triangulated face gives
@@ -71,10 +72,15 @@ struct Mesh_repair_result
 /// - duplicate points (repair: merged, which joins a soup of separate
 ///   triangles, as an STL file holds, into one surface; never refused);
 /// - faces that repeat a vertex (repair: the repetition removed, or the face dropped);
-/// - faces with more than three vertices (repair: triangulated by ear
-///   clipping on the coordinate plane closest to the face, with exact
-///   predicates; a face that is not a simple polygon there, or has more than
-///   4096 vertices, is refused);
+/// - faces with more than three vertices (repair: triangulated; a quad by its
+///   diagonal whose two triangles make the smaller dihedral angle, then the
+///   larger smallest angle; a larger face by ear clipping on the coordinate
+///   plane closest to it, with exact predicates, or, if it is not a simple
+///   polygon there and not planar, in 3D by
+///   `CGAL::Polygon_mesh_processing::triangulate_hole_polyline()` (a fan
+///   beyond 200 vertices); refused: a planar face that is not a simple polygon
+///   (it folds onto itself: no triangulation is a surface), and a face of more
+///   than 4096 vertices);
 /// - duplicate faces, with the vertices of an earlier face in any order (repair: dropped);
 /// - edges shared by more than two faces, faces oriented inconsistently with a
 ///   neighbour, and pinched vertices (repair: `CGAL::Polygon_mesh_processing::orient_polygon_soup()`,

@@ -174,7 +174,7 @@ Error_code soup_to_triangle_mesh(Polygon_soup& soup, TriangleMesh& tm, Report& r
 
   if(repair)
   {
-    code = triangulate_soup_polygons(soup, source, r.triangulated_faces, diagnostic);
+    code = triangulate_soup_polygons(soup, source, r.triangulated_faces, r.faces_triangulated_in_3d, diagnostic);
     if(code != Error_code::SUCCESS)
       return code;
   }

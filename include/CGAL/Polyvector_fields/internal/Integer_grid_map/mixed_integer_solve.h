@@ -76,9 +76,20 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
   const Eigen::SparseMatrix<double> Bx = B.leftCols(Eigen::Index(nx));
   const Eigen::SparseMatrix<double> Bn = B.rightCols(Eigen::Index(m));
   const Eigen::SparseMatrix<double> BxT = Bx.transpose();
-  const Eigen::SparseMatrix<double> Kxx = (BxT * Bx).pruned();
-  const Eigen::SparseMatrix<double> Kxn = (BxT * Bn).pruned();  // few non-zero rows: the seams' neighbourhoods
-  const Eigen::VectorXd bx = BxT * d;
+  // Eigen's pruned sparse product reads memory it does not own when a factor
+  // has no column or no row (seen on the 12-triangle box, nx = 0): the empty
+  // blocks are made directly.
+  Eigen::SparseMatrix<double> Kxx{ Eigen::Index(nx), Eigen::Index(nx) }, Kxn{ Eigen::Index(nx), Eigen::Index(m) };
+  Eigen::VectorXd bx = Eigen::VectorXd::Zero(Eigen::Index(nx));
+  if(nx > 0)
+  {
+    Kxx = (BxT * Bx).pruned();
+    bx = BxT * d;
+    if(m > 0)
+      Kxn = (BxT * Bn).pruned();  // few non-zero rows: the seams' neighbourhoods
+  }
+  Kxx.makeCompressed();
+  Kxn.makeCompressed();
   result.time_assembly += seconds_since(t);
 
   t = std::chrono::steady_clock::now();

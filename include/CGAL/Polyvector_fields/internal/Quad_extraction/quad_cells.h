@@ -248,6 +248,64 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       positions.push_back(lerp3(PP, w, 3));
     }
   }
+  // Every connected component of the surface must get cells: one without is
+  // smaller than a quad at the map's scale (or its map has no integer cell).
+  {
+    std::vector<std::size_t> component(M.F, npos), component_faces, component_cells;
+    std::vector<std::size_t> stack;
+    for(std::size_t f0 = 0; f0 < M.F; ++f0)
+    {
+      if(component[f0] != npos)
+        continue;
+      const std::size_t k = component_faces.size();
+      component_faces.push_back(0);
+      component[f0] = k;
+      stack.assign(1, f0);
+      while(!stack.empty())
+      {
+        const std::size_t f = stack.back();
+        stack.pop_back();
+        ++component_faces[k];
+        for(std::size_t e = 3 * f; e < 3 * f + 3; ++e)
+          if(M.opp[e] != npos && component[Chart_mesh::face(M.opp[e])] == npos)
+          {
+            component[Chart_mesh::face(M.opp[e])] = k;
+            stack.push_back(Chart_mesh::face(M.opp[e]));
+          }
+      }
+    }
+    component_cells.assign(component_faces.size(), 0);
+    for(const std::vector<std::size_t>& cell : C.cells)
+      for(std::size_t s : cell)
+        if(X.slots[s].face != npos && X.slots[s].face < M.F)
+        {
+          ++component_cells[component[X.slots[s].face]];
+          break;
+        }
+    result.components = component_faces.size();
+    std::size_t first_empty = npos;
+    for(std::size_t k = 0; k < component_faces.size(); ++k)
+      if(component_cells[k] == 0)
+      {
+        ++result.components_without_cells;
+        if(first_empty == npos)
+          first_empty = k;
+      }
+    if(first_empty != npos)
+    {
+      std::size_t face_of_first = 0;
+      while(component[face_of_first] != first_empty)
+        ++face_of_first;
+      result.diagnostic =
+        (component_faces.size() == 1 ? std::string("the surface") :
+                                       std::to_string(result.components_without_cells) + " of the " +
+                                         std::to_string(component_faces.size()) + " components, the first one (" +
+                                         std::to_string(component_faces[first_empty]) + " faces, face " +
+                                         std::to_string(face_of_first) + "),") +
+        " has no whole integer cell of the map: the quad size is larger than the surface there";
+      return Error_code::NO_INTEGER_CELL;
+    }
+  }
   std::vector<std::vector<std::size_t> > polygons;
   for(std::size_t f = 0; f < C.cells.size(); ++f)
   {

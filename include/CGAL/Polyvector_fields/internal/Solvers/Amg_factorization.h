@@ -72,8 +72,15 @@ public:
   bool analyze(const Sparse_matrix& A)
   {
     Timer timer;
+    m_empty = false;
     if(!A.isCompressed() || A.rows() != A.cols())
       return false;
+    if(A.rows() == 0)  // a system without unknowns: factored trivially
+    {
+      m_hierarchy.reset();
+      m_factored = false;
+      return (m_empty = true);
+    }
     if(!m_structure)
       m_structure = std::make_shared<Shared_analysis>();
     const std::uint64_t fingerprint = pattern_fingerprint(A);
@@ -115,6 +122,8 @@ public:
   bool factorize(const Sparse_matrix& A)
   {
     Timer timer;
+    if(m_empty)
+      return (m_factored = (A.rows() == 0 && A.cols() == 0));
     if(!m_hierarchy || !A.isCompressed() || pattern_fingerprint(A) != m_structure->input_fingerprint)
       return false;
     const bool first = m_hierarchy->levels.empty() || !m_factored;
@@ -163,6 +172,11 @@ public:
   // One conjugate-gradient solve per column of B.
   bool solve(const Dense_matrix& B, Dense_matrix& X)
   {
+    if(m_empty)
+    {
+      X.resize(0, B.cols());
+      return m_factored && B.rows() == 0;
+    }
     X.resize(B.rows(), B.cols());
     for(Eigen::Index j = 0; j < B.cols(); ++j)
     {
@@ -177,7 +191,12 @@ public:
   bool solve(const Dense_vector& b, Dense_vector& x)
   {
     Timer timer;
-    if(!m_factored || b.size() != m_hierarchy->structure->levels[0].A.rows)
+    if(m_empty)
+    {
+      x.resize(0);
+      return m_factored && b.size() == 0;
+    }
+    if(!m_factored || !m_hierarchy || b.size() != m_hierarchy->structure->levels[0].A.rows)
       return false;
     const int n = int(b.size());
     // In the hierarchy's numbering.
@@ -271,6 +290,7 @@ private:
   std::shared_ptr<Shared_analysis> m_structure;
   std::unique_ptr<internal::amg::Hierarchy> m_hierarchy;
   bool m_factored = false;
+  bool m_empty = false;  // the analysed matrix has no row
   int m_fresh_iterations = -1, m_last_iterations = 0;
   Dense_vector m_last;
   std::unique_ptr<Eigen::SimplicialLDLT<Sparse_matrix> > m_direct;

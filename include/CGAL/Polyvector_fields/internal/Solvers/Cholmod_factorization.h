@@ -213,10 +213,17 @@ public:
 
   // The first call on a shared analysis computes it; the others copy it.
   // The first call must not run concurrently with the others.
+  // A matrix without rows (a system without unknowns) is factored trivially:
+  // CHOLMOD refuses it.
   bool analyze(const Sparse_matrix& A)
   {
-    if(!A.isCompressed())
+    m_empty = false;
+    if(!A.isCompressed() || A.rows() != A.cols())
       return false;
+    if(m_factor != nullptr)
+      cholmod_free_factor(&m_factor, m_workspace.get());
+    if(A.rows() == 0)
+      return (m_empty = true);
     if(!m_analysis)
       m_analysis = std::make_shared<Shared_analysis>();
     if(m_factor != nullptr)
@@ -234,7 +241,9 @@ public:
 
   bool factorize(const Sparse_matrix& A)
   {
-    if(m_factor == nullptr || !A.isCompressed())
+    if(m_empty)
+      return A.rows() == 0 && A.cols() == 0;
+    if(m_factor == nullptr || !A.isCompressed() || std::size_t(A.rows()) != m_factor->n || A.cols() != A.rows())
       return false;
     cholmod_sparse S = internal::cholmod_view(A);
     cholmod_common* common = m_workspace.get();
@@ -260,6 +269,11 @@ public:
   // All the columns of B in one call.
   bool solve(const Dense_matrix& b, Dense_matrix& x)
   {
+    if(m_empty && b.rows() == 0)
+    {
+      x.resize(0, b.cols());
+      return true;
+    }
     if(m_factor == nullptr || std::size_t(b.rows()) != m_factor->n)
       return false;
     cholmod_dense B;
@@ -286,6 +300,7 @@ private:
   internal::Cholmod_workspace m_workspace;
   std::shared_ptr<Shared_analysis> m_analysis;
   cholmod_factor* m_factor = nullptr;
+  bool m_empty = false;  // the analysed matrix has no row
 };
 
 } // namespace Polyvector_fields

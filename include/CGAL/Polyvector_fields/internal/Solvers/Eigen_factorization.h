@@ -33,6 +33,7 @@
 #include <complex>
 #include <memory>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Polyvector_fields {
@@ -64,6 +65,17 @@ struct Natural_ordering_twin<Eigen::SimplicialLLT<Matrix, UpLo, Eigen::AMDOrderi
 {
   typedef Eigen::SimplicialLLT<Matrix, UpLo, Eigen::NaturalOrdering<int> > type;
 };
+
+// Eigen's CHOLMOD wrappers report success from analyzePattern() even when
+// CHOLMOD's analysis failed (and then dereference the missing factor in
+// factorize()): their `cholmod()` workspace tells.
+template <typename Solver, typename = void>
+struct Has_cholmod_workspace : std::false_type
+{};
+
+template <typename Solver>
+struct Has_cholmod_workspace<Solver, std::void_t<decltype(std::declval<Solver&>().cholmod().status)> > : std::true_type
+{};
 
 } // namespace internal
 
@@ -102,8 +114,16 @@ public:
   // Factorizations of matrices with the same pattern may share one ordering.
   void share_analysis(const std::shared_ptr<Shared_analysis>& ordering) { m_ordering = ordering; }
 
+  // A matrix without rows (a system without unknowns) is factored trivially:
+  // Eigen's and CHOLMOD's solvers do not all accept it.
   bool analyze(const Matrix& A)
   {
+    m_rows = A.rows();
+    m_analyzed = m_factored = false;
+    if(A.rows() != A.cols())
+      return false;
+    if(A.rows() == 0)
+      return (m_analyzed = true);
     if constexpr(shares_ordering)
     {
       if(!m_ordering)
@@ -119,20 +139,37 @@ public:
     }
     else
       m_solver->analyzePattern(A);
-    return m_solver->info() == Eigen::Success;
+    if constexpr(internal::Has_cholmod_workspace<Solver>::value)
+      if(m_solver->cholmod().status < 0)  // CHOLMOD_OK is 0, errors are negative
+        return false;
+    m_analyzed = (m_solver->info() == Eigen::Success);
+    return m_analyzed;
   }
 
   bool factorize(const Matrix& A)
   {
+    m_factored = false;
+    if(!m_analyzed || A.rows() != m_rows || A.cols() != m_rows)
+      return false;
+    if(A.rows() == 0)
+      return (m_factored = true);
     if constexpr(shares_ordering)
       m_solver->factorize(permuted(A));
     else
       m_solver->factorize(A);
-    return m_solver->info() == Eigen::Success;
+    m_factored = (m_solver->info() == Eigen::Success);
+    return m_factored;
   }
 
   bool solve(const Dense_matrix& B, Dense_matrix& X)
   {
+    if(!m_factored || B.rows() != m_rows)
+      return false;
+    if(m_rows == 0)
+    {
+      X.resize(0, B.cols());
+      return true;
+    }
     if constexpr(shares_ordering)
     {
       // A X = B  <=>  (P A P^T)(P X) = P B
@@ -155,6 +192,8 @@ private:
 
   std::unique_ptr<Solver> m_solver;
   std::shared_ptr<Shared_analysis> m_ordering;
+  Eigen::Index m_rows = 0;
+  bool m_analyzed = false, m_factored = false;
 };
 
 } // namespace Polyvector_fields

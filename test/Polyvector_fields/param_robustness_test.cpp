@@ -1,0 +1,447 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+// Robustness of the meshing road (issue 21): systems without unknowns, maps
+// that are checked before they are returned, polygons of any shape in the
+// input, and quad meshes that cannot be empty. The suites are named Robust*
+// and everything else is in an anonymous namespace, so that the file shares no
+// name with the other test files of the group.
+
+#include "test_meshes.h"
+
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
+#include <CGAL/Polyvector_fields/design_polyvector_field.h>
+#include <CGAL/Polyvector_fields/extract_quad_mesh.h>
+#include <CGAL/Polyvector_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Polyvector_fields/Tangent_bundle.h>
+#include <CGAL/Polyvector_fields/comb_frame_field.h>
+
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace PVF = CGAL::Polyvector_fields;
+using namespace pvf_test;
+typedef Mesh::Face_index Face;
+typedef Mesh::Halfedge_index Halfedge;
+typedef std::complex<double> Complex;
+typedef std::array<double, 2> UV;
+
+// The unit box as 12 triangles: its 8 corners are the only vertices.
+Mesh box_of_triangles()
+{
+  Mesh tm;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0, 1, 1), Point(0, 0, 1),
+                        Point(1, 0, 1), Point(1, 1, 1), tm);
+  CGAL::Polygon_mesh_processing::triangulate_faces(tm);
+  return tm;
+}
+
+// A frame field along the box's edges: each face constrained by one of its
+// axes (the one of x, y, z that lies in its plane first).
+void box_frame_field(const Mesh& tm, Mesh::Property_map<Face, std::vector<Complex> > field)
+{
+  std::vector<PVF::Face_constraint<Face, Vector> > constraints;
+  for(Face f : faces(tm))
+  {
+    const Vector n = CGAL::Polygon_mesh_processing::compute_face_normal(f, tm);
+    const Vector axis = std::abs(n.x()) < 0.5 ? Vector(1, 0, 0) : Vector(0, 1, 0);
+    constraints.push_back(PVF::Face_constraint<Face, Vector>{ f, { axis } });
+  }
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+}
+
+// ---------------------------------------------------------------------------
+// 1. Systems without unknowns.
+// ---------------------------------------------------------------------------
+
+// Every real and complex factorization of the package takes a matrix without
+// rows as a trivial success, and refuses a right-hand side of another size.
+template <typename Solver, typename Scalar>
+void check_empty_system()
+{
+  PVF::Sparse_factorization<Solver, Scalar> factorization{ Solver() };
+  const Eigen::SparseMatrix<Scalar> A(0, 0);
+  ASSERT_TRUE(factorization.analyze(A));
+  ASSERT_TRUE(factorization.factorize(A));
+  typename PVF::Sparse_factorization<Solver, Scalar>::Dense_matrix B(0, 3), X;
+  ASSERT_TRUE(factorization.solve(B, X));
+  EXPECT_EQ(X.rows(), 0);
+  EXPECT_EQ(X.cols(), 3);
+  B.resize(2, 1);
+  B.setOnes();
+  EXPECT_FALSE(factorization.solve(B, X));
+}
+
+TEST(RobustSolvers, EmptySystemIsATrivialSuccess)
+{
+  check_empty_system<PVF::Default_real_sparse_solver, double>();
+  check_empty_system<CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > >, double>();
+  check_empty_system<PVF::Default_sparse_solver, Complex>();
+}
+
+// The 12-triangle box: every vertex is a corner of valence 3, singular, so
+// the map has no continuous unknown. It was a crash in CHOLMOD's analysis.
+TEST(RobustMap, BoxWithoutContinuousUnknowns)
+{
+  const Mesh tm = box_of_triangles();
+  ASSERT_EQ(num_faces(tm), 12u);
+  Mesh& m = const_cast<Mesh&>(tm);
+  auto field = m.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  box_frame_field(tm, field);
+  std::map<Halfedge, UV> uv;
+  PVF::Integer_grid_map_result r;
+  const PVF::Error_code code = PVF::compute_integer_grid_map(tm, field, boost::make_assoc_property_map(uv), r);
+  EXPECT_EQ(r.comb.singular_vertices, 8u);
+  EXPECT_EQ(r.continuous_unknowns, 0u);
+  ASSERT_EQ(code, PVF::Error_code::SUCCESS) << PVF::get_error_message(code);
+  // every corner of the map is a singular vertex: on an integer point
+  for(const auto& e : uv)
+    for(int k = 0; k < 2; ++k)
+      EXPECT_EQ(e.second[k], std::round(e.second[k]));
+  EXPECT_EQ(r.max_seam_residual, 0.0);
+  EXPECT_EQ(r.max_singularity_residual, 0.0);
+}
+
+// ---------------------------------------------------------------------------
+// 2. Stiffening keeps the system solvable.
+// ---------------------------------------------------------------------------
+
+// Stiffening makes the faces near a flip heavier each round. Faces that stay
+// flipped had their weight multiplied by at least 2 per round without bound,
+// so that after tens of rounds the system was too ill-conditioned to solve
+// (cow.off, h = 0.045: "the sparse linear solver failed" after 20 rounds,
+// the Schur complement's eigenvalues from 0.008 to 4e16). Here the faces of a
+// cap of a sphere stay flipped for 100 rounds: the weights stay bounded, and
+// the mixed-integer system with them is still solved.
+TEST(RobustMap, StiffeningWeightsStayBoundedAndSolvable)
+{
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  namespace I = PVF::internal;
+  Mesh tm = sphere(2);
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 5, 2, 11), field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> comb;
+  ASSERT_EQ(comb.compute(bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
+  const auto& M = comb.corner_mesh();
+  const auto& D = comb.data();
+  I::Seamless_reduction R;
+  ASSERT_EQ(I::reduce_seamless_variables(M, D, R), PVF::Error_code::SUCCESS);
+  const std::size_t nx = 2 * R.continuous_vertices, m = 2 * R.integer_variables;
+  ASSERT_GT(m, 0u);
+  I::Guidance_system S;
+  I::assemble_guidance(M, D, R, 0.2, nx + m, S);
+  std::vector<std::vector<std::size_t> > vertex_faces(M.V);
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    vertex_faces[M.target[c]].push_back(c / 3);
+  const std::vector<Complex> zero_map(3 * M.F, Complex(0));
+  std::vector<char> flag;
+  ASSERT_EQ(I::flipped_faces(S, zero_map, flag), M.F);
+  // the faces of the cap z > 0.7 stay flipped; the others keep weight 1 but near them
+  std::size_t flipped = 0;
+  for(std::size_t f = 0; f < M.F; ++f)
+  {
+    double z = 0;
+    for(std::size_t k = 0; k < 3; ++k)
+      z += M.point[M.target[3 * f + k]][2] / 3;
+    flag[f] = z > 0.7;
+    flipped += std::size_t(flag[f]);
+  }
+  ASSERT_GT(flipped, 0u);
+  ASSERT_LT(flipped, M.F / 3);
+  std::vector<double> weight(M.F, 1.0);
+  for(int round = 0; round < 100; ++round)
+    I::stiffen(M, S, vertex_faces, zero_map, flag, 1.0, weight);
+  for(double w : weight)
+  {
+    EXPECT_GE(w, 1.0);
+    EXPECT_LE(w, I::max_stiffening_weight);
+  }
+  std::vector<double> row_weight(4 * M.F);
+  for(std::size_t k = 0; k < row_weight.size(); ++k)
+    row_weight[k] = std::sqrt(weight[k / 4]);
+  Eigen::VectorXd y_continuous, y_rounded;
+  PVF::Integer_grid_map_result report;
+  ASSERT_EQ(I::solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, PVF::Default_real_sparse_solver(), false, y_continuous,
+                                   y_rounded, report),
+            PVF::Error_code::SUCCESS);
+  ASSERT_EQ(y_rounded.size(), Eigen::Index(nx + m));
+  EXPECT_TRUE(y_rounded.allFinite());
+  for(std::size_t i = nx; i < nx + m; ++i)
+    EXPECT_NEAR(y_rounded[Eigen::Index(i)], std::round(y_rounded[Eigen::Index(i)]), 1e-6);  // exact once snapped
+}
+
+// ---------------------------------------------------------------------------
+// 3. Polygons that other tools accept.
+// ---------------------------------------------------------------------------
+
+struct Read_mesh
+{
+  PVF::Error_code code;
+  Mesh tm;
+  PVF::IO::Mesh_repair_result report;
+};
+
+Read_mesh read_off(const std::string& name, const std::string& text)
+{
+  const std::string path = ::testing::TempDir() + "pvf_robust_" + name;
+  {
+    std::ofstream out(path);
+    out << text;
+  }
+  Read_mesh r;
+  r.code = PVF::IO::read_triangle_mesh(path, r.tm, r.report);
+  std::remove(path.c_str());
+  return r;
+}
+
+// cos of the dihedral angle at the edge between two triangles sharing edge (a, b)
+double dihedral_cosine(const Mesh& tm)
+{
+  std::vector<Vector> n;
+  for(auto f : faces(tm))
+    n.push_back(CGAL::Polygon_mesh_processing::compute_face_normal(f, tm));
+  return n.size() == 2 ? n[0] * n[1] : -2;
+}
+
+// A skew quad, as face 0 of the gridded box cube_40k.obj (a quad whose
+// projection on its best coordinate plane is not simple): split by the
+// diagonal with the smaller dihedral angle, never refused.
+TEST(RobustInput, NonPlanarQuadIsSplitByItsBetterDiagonal)
+{
+  const Read_mesh r = read_off("skew.off", "OFF\n4 1 0\n0 0 0\n0 -1 0\n-1 -1 -1\n0 -1 -1\n4 0 1 2 3\n");
+  ASSERT_EQ(r.code, PVF::Error_code::SUCCESS);
+  EXPECT_EQ(r.report.triangulated_faces, 1u);
+  EXPECT_EQ(r.report.faces_triangulated_in_3d, 1u);
+  ASSERT_EQ(num_faces(r.tm), 2u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(r.tm));
+  // the other diagonal, by hand: the two splits' dihedral cosines
+  const Vector p0(0, 0, 0), p1(0, -1, 0), p2(-1, -1, -1), p3(0, -1, -1);
+  auto cosine = [](const Vector& a, const Vector& b, const Vector& c, const Vector& d) {
+    const Vector n1 = CGAL::cross_product(b - a, c - a), n2 = CGAL::cross_product(c - a, d - a);
+    return (n1 * n2) / std::sqrt(n1.squared_length() * n2.squared_length());
+  };
+  const double best = (std::max)(cosine(p0, p1, p2, p3), cosine(p1, p2, p3, p0));
+  EXPECT_NEAR(dihedral_cosine(r.tm), best, 1e-12);
+  // orientation kept: both triangles turn as the quad (normals on the same side as its Newell normal)
+  const Vector newell(0.5 * ((p0.y() - p1.y()) * (p0.z() + p1.z()) + (p1.y() - p2.y()) * (p1.z() + p2.z()) +
+                             (p2.y() - p3.y()) * (p2.z() + p3.z()) + (p3.y() - p0.y()) * (p3.z() + p0.z())),
+                      0.5 * ((p0.z() - p1.z()) * (p0.x() + p1.x()) + (p1.z() - p2.z()) * (p1.x() + p2.x()) +
+                             (p2.z() - p3.z()) * (p2.x() + p3.x()) + (p3.z() - p0.z()) * (p3.x() + p0.x())),
+                      0.5 * ((p0.x() - p1.x()) * (p0.y() + p1.y()) + (p1.x() - p2.x()) * (p1.y() + p2.y()) +
+                             (p2.x() - p3.x()) * (p2.y() + p3.y()) + (p3.x() - p0.x()) * (p3.y() + p0.y())));
+  for(auto f : faces(r.tm))
+    EXPECT_GT(CGAL::Polygon_mesh_processing::compute_face_normal(f, r.tm) * newell, 0);
+}
+
+// A planar non-convex quad (a dart): the diagonal inside it, not the one
+// that folds it; a planar convex quad: the diagonal of the larger smallest angle.
+TEST(RobustInput, PlanarQuadsSplitWithoutFold)
+{
+  const Read_mesh dart = read_off("dart.off", "OFF\n4 1 0\n0 0 0\n2 1 0\n0 2 0\n0.5 1 0\n4 0 1 2 3\n");
+  ASSERT_EQ(dart.code, PVF::Error_code::SUCCESS);
+  EXPECT_EQ(dart.report.faces_triangulated_in_3d, 0u);
+  ASSERT_EQ(num_faces(dart.tm), 2u);
+  EXPECT_NEAR(dihedral_cosine(dart.tm), 1.0, 1e-12);
+  // a long thin rectangle with a shifted corner: the diagonal 1-3 gives the fatter triangles
+  const Read_mesh kite = read_off("kite.off", "OFF\n4 1 0\n0 0 0\n3 0 0\n3.2 1 0\n0 1 0\n4 0 1 2 3\n");
+  ASSERT_EQ(kite.code, PVF::Error_code::SUCCESS);
+  ASSERT_EQ(num_faces(kite.tm), 2u);
+  bool has_diagonal_13 = false;
+  for(auto e : edges(kite.tm))
+  {
+    const Point a = kite.tm.point(source(e, kite.tm)), b = kite.tm.point(target(e, kite.tm));
+    if(!is_border(e, kite.tm))
+      has_diagonal_13 = (a == Point(3, 0, 0) && b == Point(0, 1, 0)) || (b == Point(3, 0, 0) && a == Point(0, 1, 0));
+  }
+  EXPECT_TRUE(has_diagonal_13);
+}
+
+// A non-planar hexagon whose projection on every coordinate plane folds (a
+// zig-zag crown): triangulated in 3D into 4 triangles, a valid surface.
+TEST(RobustInput, NonPlanarHexagonTriangulatedIn3D)
+{
+  std::string off = "OFF\n6 1 0\n";
+  for(int k = 0; k < 6; ++k)
+  {
+    const double a = 2 * CGAL_PI * double(k) / 6;
+    off += std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " " + (k % 2 ? "1.5" : "-1.5") + "\n";
+  }
+  // vertices in the order 0 2 4 1 3 5: a star whose projection on z = 0 crosses itself
+  off += "6 0 2 4 1 3 5\n";
+  const Read_mesh r = read_off("crown.off", off);
+  ASSERT_EQ(r.code, PVF::Error_code::SUCCESS);
+  EXPECT_EQ(r.report.triangulated_faces, 1u);
+  EXPECT_EQ(r.report.faces_triangulated_in_3d, 1u);
+  EXPECT_EQ(num_faces(r.tm), 4u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(r.tm));
+  // still refused: a planar polygon that folds onto itself (a bow tie)
+  const Read_mesh bow_tie = read_off("bow.off", "OFF\n4 1 0\n0 0 0\n1 1 0\n1 0 0\n0 1 0\n4 0 1 2 3\n");
+  EXPECT_EQ(bow_tie.code, PVF::Error_code::NON_TRIANGLE_FACE);
+}
+
+// ---------------------------------------------------------------------------
+// 4. Every map is checked before it is returned.
+// ---------------------------------------------------------------------------
+
+// The maps that come back are exact under their own transitions, and the
+// check (internal/Integer_grid_map/map_check.h) finds every kind of damage
+// done to one of them: a translation, a rotation, a singular value moved off
+// the grid.
+TEST(RobustMap, ReturnedMapsPassTheCheckAndDamageIsFound)
+{
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  Mesh tm = sphere(2);
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 5, 2, 11), field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> comb;
+  ASSERT_EQ(comb.compute(bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
+  std::map<Halfedge, UV> uv;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(PVF::compute_integer_grid_map(comb, boost::make_assoc_property_map(uv), r, PVF::parameters::target_edge_length(0.3)),
+            PVF::Error_code::SUCCESS);
+  EXPECT_TRUE(r.diagnostic.empty());
+  EXPECT_EQ(r.max_seam_residual, 0.0);
+  EXPECT_EQ(r.max_singularity_residual, 0.0);
+  ASSERT_GT(r.comb.singular_vertices, 0u);
+  ASSERT_GT(r.comb.cut_edges, 0u);
+
+  const auto& M = comb.corner_mesh();
+  const auto& D = comb.data();
+  std::vector<Complex> values(3 * M.F);
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    values[c] = Complex(uv[M.halfedge[c]][0], uv[M.halfedge[c]][1]);
+  namespace I = PVF::internal;
+  EXPECT_EQ(I::check_integer_grid_map(M, D, values, r.seam_transitions), "");
+  // an interior edge with a transition, one off the cut, a singular corner
+  std::size_t seam = 0, plain = 0, singular = 0;
+  while(!(M.opposite[seam] != I::npos && (r.seam_transitions[seam].rotation != 0 ||
+                                          r.seam_transitions[seam].translation != std::array<std::int64_t, 2>{ { 0, 0 } })))
+    ++seam;
+  while(M.opposite[plain] == I::npos || D.seam[plain])
+    ++plain;
+  while(D.index[M.target[singular]] == 0)
+    ++singular;
+  auto damaged = [&](auto change) {
+    auto v = values;
+    auto t = r.seam_transitions;
+    change(v, t);
+    return I::check_integer_grid_map(M, D, v, t);
+  };
+  const std::string translated = damaged([&](auto&, auto& t) { t[seam].translation[0] += 1; });
+  EXPECT_NE(translated.find("not exact"), std::string::npos) << translated;
+  const std::string rotated = damaged([&](auto&, auto& t) { t[plain].rotation = (t[plain].rotation + 1) % 4; });
+  EXPECT_FALSE(rotated.empty());
+  const std::string off_grid = damaged([&](auto& v, auto&) {
+    for(std::size_t c = 0; c < v.size(); ++c)
+      if(M.target[c] == M.target[singular])
+        v[c] += Complex(0.25, 0);
+  });
+  EXPECT_FALSE(off_grid.empty());
+}
+
+// ---------------------------------------------------------------------------
+// 5. No empty quad mesh.
+// ---------------------------------------------------------------------------
+
+// A frame along the axes on every face of a flat mesh.
+void axis_frames(const Mesh& tm, Mesh::Property_map<Face, std::vector<Complex> > field)
+{
+  std::vector<PVF::Face_constraint<Face, Vector> > constraints;
+  for(Face f : faces(tm))
+    constraints.push_back(PVF::Face_constraint<Face, Vector>{ f, { Vector(1, 0, 0), Vector(0, 1, 0) } });
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+}
+
+PVF::Error_code quads_of(const Mesh& tm, double h, Mesh& quads, PVF::Quad_extraction_result& extraction)
+{
+  Mesh& m = const_cast<Mesh&>(tm);
+  auto field = m.add_property_map<Face, std::vector<Complex> >("f:axes").first;
+  axis_frames(tm, field);
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> comb;
+  EXPECT_EQ(comb.compute(bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
+  std::map<Halfedge, UV> uv;
+  PVF::Integer_grid_map_result r;
+  const PVF::Error_code code =
+    PVF::compute_integer_grid_map(comb, boost::make_assoc_property_map(uv), r, PVF::parameters::target_edge_length(h));
+  EXPECT_EQ(code, PVF::Error_code::SUCCESS);
+  if(code != PVF::Error_code::SUCCESS)
+    return code;
+  return PVF::extract_quad_mesh(bundle, boost::make_assoc_property_map(uv), r, quads, extraction);
+}
+
+// The 2-triangle unit square with quads of size 2: no integer cell. An
+// error that says so, not an empty mesh.
+TEST(RobustQuads, QuadLargerThanTheSurfaceIsAnError)
+{
+  const Mesh square = grid(1, 1);
+  ASSERT_EQ(num_faces(square), 2u);
+  Mesh quads;
+  CGAL::make_triangle(Point(5, 5, 5), Point(6, 5, 5), Point(5, 6, 5), quads);  // untouched on failure
+  PVF::Quad_extraction_result extraction;
+  EXPECT_EQ(quads_of(square, 2.0, quads, extraction), PVF::Error_code::NO_INTEGER_CELL);
+  EXPECT_EQ(extraction.components, 1u);
+  EXPECT_EQ(extraction.components_without_cells, 1u);
+  EXPECT_NE(extraction.diagnostic.find("the surface has no whole integer cell"), std::string::npos) << extraction.diagnostic;
+  EXPECT_EQ(num_faces(quads), 1u);
+  // a quad size that fits: 4 quads
+  Mesh fine;
+  ASSERT_EQ(quads_of(square, 0.5, fine, extraction), PVF::Error_code::SUCCESS) << extraction.diagnostic;
+  EXPECT_EQ(num_faces(fine), 4u);
+}
+
+// Two components, a 4 x 4 grid and a square of side 0.4 beside it: with quads
+// of size 1 the small one gets none. Refused, and the diagnostic names it.
+TEST(RobustQuads, ComponentWithoutQuadIsNamed)
+{
+  Mesh tm = grid(4, 4);
+  const std::size_t big_faces = num_faces(tm);
+  const Mesh small = grid(1, 1);
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> to;
+  for(auto v : vertices(small))
+    to[v] = tm.add_vertex(Point(10 + 0.4 * small.point(v).x(), 0.4 * small.point(v).y(), 0));
+  for(auto f : faces(small))
+  {
+    std::vector<Mesh::Vertex_index> vs;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, small), small))
+      vs.push_back(to[v]);
+    tm.add_face(vs);
+  }
+  Mesh quads;
+  PVF::Quad_extraction_result extraction;
+  EXPECT_EQ(quads_of(tm, 1.0, quads, extraction), PVF::Error_code::NO_INTEGER_CELL);
+  EXPECT_EQ(extraction.components, 2u);
+  EXPECT_EQ(extraction.components_without_cells, 1u);
+  EXPECT_NE(extraction.diagnostic.find("1 of the 2 components, the first one (2 faces, face " + std::to_string(big_faces) + ")"),
+            std::string::npos)
+    << extraction.diagnostic;
+  EXPECT_EQ(num_faces(quads), 0u);
+}
+
+} // namespace

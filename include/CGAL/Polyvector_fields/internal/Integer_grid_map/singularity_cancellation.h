@@ -71,7 +71,7 @@ int matching_holonomy(const CornerMesh& M, const std::vector<int>& shift, std::s
 // An index moves from v to w by |k| quarter turns on the corners of the shortest
 // edge path through interior vertices; the vertices inside the path keep their
 // index (one quarter turn comes in, the same goes out). `shift` and `index` are
-// updated. Nothing is changed, and npos returned, when the holonomy of the
+// updated. Nothing is changed, and `consistent` is set to false, when the holonomy of the
 // matching does not agree with the indices.
 struct Singularity_separation
 {
@@ -167,8 +167,7 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
     }
     touched.clear();
   };
-  // Moves index k (all of from's by default) from `from` to `to` along the path of
-  // the last search from `from`.
+  // Moves k of from's index to `to` along the path of the last search from `from`.
   auto transfer = [&](std::size_t from, std::size_t to, int k) {
     // Along corner c, index(source) -= k and index(target) += k: the holonomy at
     // the source changes by -sign*k, so the corner's shift does.

@@ -148,7 +148,7 @@ TEST(RobustMap, StiffeningWeightsStayBoundedAndSolvable)
   const auto& D = comb.data();
   I::Seamless_reduction R;
   ASSERT_EQ(I::reduce_seamless_variables(M, D, R), PVF::Error_code::SUCCESS);
-  const std::size_t nx = 2 * R.continuous_vertices, m = 2 * R.integer_variables;
+  const std::size_t nx = R.continuous_columns, m = R.integer_columns;
   ASSERT_GT(m, 0u);
   I::Guidance_system S;
   I::assemble_guidance(M, D, R, 0.2, nx + m, S);

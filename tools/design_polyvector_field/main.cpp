@@ -58,7 +58,7 @@ int run(const Options& o)
   const Constraint_set constraints = gather_constraints(o, input, bundle, curvature, clock);
   const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
-  const Parametrization param = parametrize(o, input.tm, size, field, clock);
+  const Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
   Quad_stage quads;
   make_quad_mesh(o, input.tm, bundle, param, quads, clock);
   write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);

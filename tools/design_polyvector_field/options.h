@@ -50,7 +50,13 @@ const char* usage =
   "  --constraints FILE       constraint file: 'face_id x y z [x y z ...]' per line, '#' comments\n"
   "  --dmat-b FILE --dmat-bc FILE   libigl constraints: face ids (b) and vectors (bc)\n"
   "  --soft WEIGHT            make every constraint soft with this weight, in [1e-8, 1e8]\n"
-  "  --sharp-edges DEGREES    partial constraints along edges whose dihedral angle exceeds DEGREES\n"
+  "  --sharp-edges DEGREES    partial constraints along edges whose dihedral angle exceeds DEGREES;\n"
+  "                           with --parametrize these edges also lie on integer iso-lines, so they\n"
+  "                           become quad edges (default with --parametrize and --mesh: 40)\n"
+  "  --no-sharp-edges         no sharp edges (with --parametrize: a smooth surface's creases are free)\n"
+  "  --free-boundary          with --parametrize: the boundary is free, as the paper's (default without\n"
+  "                           --mesh); by default the field follows the boundary and the map puts it\n"
+  "                           on integer iso-lines, so the quads cover the surface up to its border\n"
   "  --random-constraints K   full constraints with random vectors on K random faces (see --seed)\n"
   "  --seed S                 seed of --random-constraints (default 1)\n"
   "frame fields (imply --degree 4 --sign-symmetric):\n"
@@ -76,7 +82,7 @@ const char* usage =
   "  --singularity-separation F  singularities of the field closer than F quads are cancelled\n"
   "                           (opposite indices), merged (into one vertex of valence 3 to 6) or moved\n"
   "                           apart, since two of them on one integer point fold the map over\n"
-  "                           (default 1; 0 keeps every singularity of the field)"
+  "                           (default 1; 0 keeps every singularity of the field)\n"
   "  --out-param FILE.obj     write the map as OBJ with one texture coordinate per corner (implies\n"
   "                           --parametrize; default with --parametrize: output/<mesh name>.param.obj)\n"
   "quad meshes (from the map; imply --parametrize):\n"
@@ -96,6 +102,11 @@ const char* usage =
   "Exit status: 0 on success, 2 for a bad command line, 1 for bad input or a failure; on failure\n"
   "no output file is written.\n";
 
+// The crease angle of a user's mesh with --parametrize: the dihedral angle
+// above which an edge is sharp (QuadWild's and Instant Meshes' defaults are
+// of the same order).
+constexpr double default_sharp_degrees = 40;
+
 struct Options
 {
   std::string mesh;
@@ -108,6 +119,9 @@ struct Options
   std::string constraints, dmat_b, dmat_bc;
   double soft_weight = 0;  // 0: hard
   double sharp_degrees = -1;  // < 0: no sharp-edge constraints
+  bool no_sharp_edges = false;      // --no-sharp-edges
+  bool free_boundary = false;       // --free-boundary
+  bool boundary_alignment = false;  // the border edges are features (set by the parser)
   std::size_t random_constraints = 0;
   unsigned seed = 1;
   double curvature_percent = -1;  // < 0: none
@@ -235,6 +249,8 @@ Options parse_options(int argc, char** argv)
       if(o.sharp_degrees >= 180)
         throw Failure("--sharp-edges expects an angle in [0, 180) degrees", 2);
     }
+    else if(flag == "--no-sharp-edges") o.no_sharp_edges = true;
+    else if(flag == "--free-boundary") o.free_boundary = true;
     else if(flag == "--random-constraints") o.random_constraints = line.integer(0, 4000000000ull);
     else if(flag == "--seed") o.seed = unsigned(line.integer(0, 4294967295ull));
     else if(flag == "--curvature-constraints") o.curvature_percent = line.number(0, 100, true);
@@ -289,7 +305,20 @@ Options parse_options(int argc, char** argv)
   }
   if(o.dmat_b.empty() != o.dmat_bc.empty())
     throw Failure("--dmat-b and --dmat-bc go together", 2);
-  if(o.mesh.empty())
+  const bool bundled = o.mesh.empty();
+  if(o.no_sharp_edges && o.sharp_degrees >= 0)
+    throw Failure("--sharp-edges and --no-sharp-edges contradict each other", 2);
+  if(o.free_boundary && !o.parametrize)
+    throw Failure("--free-boundary goes with --parametrize or --quad-mesh", 2);
+  if(o.parametrize && !bundled)
+  {
+    // A user's mesh gets its creases and its boundary as quad edges; the
+    // bundled run is the paper's, with a free boundary.
+    if(o.sharp_degrees < 0 && !o.no_sharp_edges)
+      o.sharp_degrees = default_sharp_degrees;
+    o.boundary_alignment = !o.free_boundary;
+  }
+  if(bundled)
   {
     // The bundled architectural mesh, with its constraints unless others are given.
     const std::string data = PVF_DATA_DIR;

@@ -147,6 +147,9 @@ struct Constraint_set
   std::vector<Constraint> list;
   std::size_t from_files = 0, random = 0, sharp = 0, from_curvature = 0;
   std::string note;  // said in the summary
+  // The edges that the map puts on integer iso-lines (sharp edges, and the
+  // border with boundary alignment), by the rule of the sharp-edge constraints.
+  std::optional<Mesh::Property_map<Mesh::Edge_index, bool> > features;
 
   std::set<Face> faces() const
   {
@@ -242,11 +245,18 @@ Constraint_set gather_constraints(const Options& o, Input_mesh& input, const Bun
   Constraint_set set;
   add_file_constraints(o, input, set);
   add_random_constraints(o, input.tm, set);
-  if(o.sharp_degrees >= 0)
+  if(o.sharp_degrees >= 0 || o.boundary_alignment)
   {
-    // Faces already constrained are left alone.
+    // Faces already constrained are left alone. With the boundary alone, only
+    // a fold of nearly 180 degrees (a degenerate crease) counts as sharp.
     std::vector<Constraint> sharp;
-    check(PVF::select_sharp_edge_constraints(input.tm, o.sharp_degrees, o.vectors_per_constraint(), sharp),
+    const double degrees = o.sharp_degrees >= 0 ? o.sharp_degrees : 179.9;
+    if(o.parametrize)
+      set.features = input.tm.add_property_map<Mesh::Edge_index, bool>("e:pvf_feature", false).first;
+    const auto np = PVF::parameters::boundary_alignment(o.boundary_alignment);
+    check(set.features ? PVF::select_sharp_edge_constraints(input.tm, degrees, o.vectors_per_constraint(), sharp,
+                                                            np.edge_is_constrained_map(*set.features))
+                       : PVF::select_sharp_edge_constraints(input.tm, degrees, o.vectors_per_constraint(), sharp, np),
           "sharp-edge constraints");
     const std::set<Face> constrained = set.faces();
     for(const Constraint& c : sharp)
@@ -490,21 +500,27 @@ struct Parametrization
   PVF::Integer_grid_map_result result;
 };
 
-Parametrization parametrize(const Options& o, Mesh& tm, const Quad_size& size, const Field& field, Stopwatch& clock)
+Parametrization parametrize(const Options& o, Mesh& tm, const Quad_size& size, const Constraint_set& constraints,
+                            const Field& field, Stopwatch& clock)
 {
   Parametrization p;
   if(!o.parametrize)
     return p;
   p.uv = tm.add_property_map<Mesh::Halfedge_index, std::array<double, 2> >("h:pvf_uv").first;
   const double h = size.h;
-  // Singularities closer than one quad would meet on one integer point.
-  const auto np = PVF::parameters::singularity_cancellation_distance(o.singularity_separation * h);
+  // Singularities closer than one quad would meet on one integer point; the
+  // features (the border among them) lie on integer iso-lines.
+  const auto features = constraints.features ? *constraints.features
+                                             : tm.add_property_map<Mesh::Edge_index, bool>("e:pvf_feature", false).first;
+  const auto np = PVF::parameters::singularity_cancellation_distance(
+    o.singularity_separation * h, PVF::parameters::boundary_alignment(o.boundary_alignment))
+                    .edge_is_constrained_map(features);
   // With the mean edge length of an unrefined mesh, the map takes it itself.
   const PVF::Error_code code =
     !size.from_mean_edge || size.refined()
       ? PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, PVF::parameters::target_edge_length(h, np))
       : PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, np);
-  check(code, "parametrization");
+  check(code, "parametrization", code == PVF::Error_code::MAP_CHECK_FAILED ? p.result.diagnostic : std::string());
   p.computed = true;
   clock.lap("parametrization");
   return p;

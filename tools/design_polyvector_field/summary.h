@@ -152,6 +152,13 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     std::cout << "; worst seam residual " << r.max_seam_residual << "; energy rounded/continuous " << r.energy_ratio;
     if(r.comb.clamped_faces > 0)
       std::cout << "; " << r.comb.clamped_faces << " near-degenerate frames clamped";
+    if(r.feature_edges > 0)
+      std::cout << "\nfeatures        " << r.aligned_feature_edges << " of " << r.feature_edges
+                << " feature edges (sharp" << (o.boundary_alignment ? " and border" : "") << ") on integer iso-lines, "
+                << r.feature_corners << " feature corners on integer points; " << r.unaligned_feature_edges
+                << " left free (the field does not follow them)"
+                << (r.dropped_feature_edges ? ", " + std::to_string(r.dropped_feature_edges) + " with no integer solution"
+                                            : std::string());
     const auto old_flags = std::cout.flags();
     const auto old_precision = std::cout.precision();
     std::cout << std::fixed << std::setprecision(3) << "\n                (time: comb and cut " << r.time_comb

@@ -83,6 +83,12 @@ struct Integer_grid_map_result
   std::size_t integer_unknowns = 0;       ///< scalar integer unknowns after the exact reduction (and pins)
   std::size_t integer_unknowns_before_reduction = 0;  ///< 2 (singular vertices + seam curves)
   std::size_t extra_integer_relations = 0;///< relations left at the root of a seam tree (expected 0)
+  std::size_t feature_edges = 0;          ///< edges asked to lie on integer iso-lines: the edges of `edge_is_constrained_map`, and the border edges with `boundary_alignment`
+  std::size_t aligned_feature_edges = 0;  ///< of them, on an integer iso-line of the map (exactly)
+  std::size_t unaligned_feature_edges = 0;///< of them, left free because the field does not run along them (within `max_feature_angle`)
+  std::size_t dropped_feature_edges = 0;  ///< of them, left free because their relation could not be eliminated over the integers (expected 0)
+  std::size_t feature_vertices = 0;       ///< vertices on an aligned feature edge
+  std::size_t feature_corners = 0;        ///< of them, regular vertices put on an integer point because the field follows two feature curves there
   std::size_t flipped_faces = 0;          ///< faces with det(grad uv) <= 0 in the output
   std::vector<std::size_t> flipped_per_round;  ///< flipped faces after each stiffening round
   std::size_t stiffening_rounds = 0;      ///< solves after the first one
@@ -169,7 +175,19 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
   result.extra_integer_relations = R.extra_relations;
   if(code != Error_code::SUCCESS)
     return code;
-  const std::size_t nx = 2 * R.continuous_vertices, m = 2 * R.integer_variables;
+  std::vector<char> feature;
+  if(internal::feature_corners(M, np, feature))
+  {
+    internal::Feature_alignment_report features;
+    internal::align_features(M, D, feature, internal::max_feature_angle, R, features);
+    result.feature_edges = features.feature_edges;
+    result.aligned_feature_edges = features.aligned_edges;
+    result.unaligned_feature_edges = features.unaligned_edges;
+    result.dropped_feature_edges = features.dropped_edges;
+    result.feature_vertices = features.feature_vertices;
+    result.feature_corners = features.feature_corners;
+  }
+  const std::size_t nx = R.continuous_columns, m = R.integer_columns;
   result.continuous_unknowns = nx;
   result.integer_unknowns = m;
   result.integer_unknowns_before_reduction = 2 * (result.comb.singular_vertices + result.comb.seam_curves);
@@ -217,7 +235,27 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// and the translations of the seam curves that the exact elimination of the
 /// seam relations over the Gaussian integers leaves free. One translation per
 /// component is pinned (a singular vertex at the origin, or the first vertex).
-/// The boundary is free.
+/// The boundary is free, unless it is a feature.
+///
+/// <b>Features.</b> The edges of `edge_is_constrained_map` (sharp edges, say
+/// from `select_sharp_edge_constraints()`), and the border edges with
+/// `boundary_alignment`, are features. Along a feature edge whose field
+/// direction (`u` or `v` in one of its faces) makes an angle of at most
+/// 30 degrees with the edge, the map keeps the other coordinate constant and
+/// integer: the edge lies on an integer iso-line, so a chain of such edges
+/// becomes a chain of quad edges. The coordinate of each vertex on such an
+/// edge becomes an integer unknown, and the relation "same value at both ends"
+/// of each edge is eliminated exactly over the integers (as the seams), so the
+/// alignment is exact in the output. A vertex where the field follows two
+/// feature curves (a corner of a box) gets both coordinates integer: a quad
+/// corner. A feature edge along which neither field direction runs is left
+/// free and counted (`unaligned_feature_edges`): where feature curves meet
+/// at an angle that the frame does not have (two creases at 30 degrees, say,
+/// with an orthogonal frame), only the curve that the field follows is on an
+/// iso-line. Design the field with the features as constraints first, so
+/// that it follows them. Features closer to each other than about half a quad
+/// are put on the same or neighbouring iso-lines, which can fold the faces
+/// between them: the quad size must resolve the features.
 ///
 /// <b>Solve.</b> The continuous block is factored once per round (sparse SPD,
 /// `sparse_linear_solver`); the integer unknowns are eliminated through their
@@ -266,6 +304,18 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///     \cgalParamType{`double >= 0`, in mesh units}
 ///     \cgalParamDefault{0: every singularity of the field is kept}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{a property map telling which edges are features, to be put on integer
+///                           iso-lines (see <b>Features</b>); given with `CGAL::parameters::edge_is_constrained_map()`}
+///     \cgalParamType{a model of `ReadablePropertyMap` from `boost::graph_traits<TriangleMesh>::%edge_descriptor` to `bool`}
+///     \cgalParamDefault{no feature edge}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_alignment}
+///     \cgalParamDescription{whether the border edges are features too; given with
+///                           `Polyvector_fields::parameters::boundary_alignment()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`: a free boundary}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the maximum number of stiffening rounds after the first solve}
 ///     \cgalParamType{`std::size_t`}
@@ -301,8 +351,9 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///          which no test mesh has shown); `MAP_CHECK_FAILED` if the computed map fails its final check
 ///          (`result.diagnostic` says which part): before it is returned, the map is checked exactly from its
 ///          values and `result.seam_transitions` alone: every seam exact under its transition, the two
-///          sides of every edge inverse, every singular vertex on an integer point, and the transitions
-///          around every interior regular vertex composing to the identity. `uv_map` is written only on
+///          sides of every edge inverse, every singular vertex on an integer point, the transitions
+///          around every interior regular vertex composing to the identity, and every aligned feature
+///          edge on an integer iso-line. `uv_map` is written only on
 ///          success; the mesh is never changed.
 ///
 /// \sa `comb_frame_field()`, `extract_quad_mesh()`, `IO::write_integer_grid_map_OBJ()`

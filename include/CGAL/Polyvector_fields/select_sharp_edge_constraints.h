@@ -14,6 +14,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Face_constraint.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/sharp_edge_constraints.h>
+#include <CGAL/Polyvector_fields/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -47,6 +49,13 @@ namespace Polyvector_fields {
 /// sign-symmetric field the sign does not matter. The constraints are stored
 /// in `out` in the order of `faces(tm)`.
 ///
+/// With `boundary_alignment`, the border edges are kept too, as the sharpest
+/// edges (their angle counts as 180 degrees): the field then follows the
+/// boundary, as `compute_integer_grid_map()` needs to put it on iso-lines.
+/// With `edge_is_constrained_map`, every edge is marked in it, `true` for a
+/// kept edge: the features to give to `compute_integer_grid_map()`, by the
+/// same rule.
+///
 /// For an `N`-PolyVector field, `maximum_vectors_per_face` is `N` (or `N/2`
 /// with sign symmetry, which makes a face with that many sharp edges fully
 /// constrained); a face with fewer sharp edges gets a partial constraint.
@@ -64,6 +73,17 @@ namespace Polyvector_fields {
 ///
 /// \cgalNamedParamsBegin
 ///   \pvfParamVertexPointMap
+///   \cgalParamNBegin{boundary_alignment}
+///     \cgalParamDescription{whether the border edges are kept as sharp edges; given with
+///                           `Polyvector_fields::parameters::boundary_alignment()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{receives, for every edge, whether it was kept (written on success only)}
+///     \cgalParamType{a model of `WritablePropertyMap` from `boost::graph_traits<TriangleMesh>::%edge_descriptor` to `bool`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{a geometric traits class, given to `detect_sharp_edges()`}
 ///     \cgalParamType{a model of `Kernel`}
@@ -98,7 +118,26 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
     return Error_code::INVALID_PARAMETER;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  return internal::select_sharp_edge_constraints(tm, angle_in_degrees, maximum_vectors_per_face, vpm, out, np);
+  const bool with_border = choose_parameter(get_parameter(np, internal_np::boundary_alignment), false);
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
+    return internal::select_sharp_edge_constraints(tm, angle_in_degrees, maximum_vectors_per_face, vpm, with_border, out,
+                                                   np, [](edge_descriptor, bool) {});
+  else
+  {
+    // the map is written only on success
+    std::vector<std::pair<edge_descriptor, bool> > flags;
+    const Error_code code = internal::select_sharp_edge_constraints(
+      tm, angle_in_degrees, maximum_vectors_per_face, vpm, with_border, out, np,
+      [&flags](edge_descriptor e, bool kept) { flags.emplace_back(e, kept); });
+    if(code == Error_code::SUCCESS)
+    {
+      auto ecm = get_parameter(np, CGAL::internal_np::edge_is_constrained);
+      for(const auto& flag : flags)
+        put(ecm, flag.first, flag.second);
+    }
+    return code;
+  }
 }
 
 } // namespace Polyvector_fields

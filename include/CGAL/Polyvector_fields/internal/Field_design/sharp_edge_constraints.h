@@ -47,14 +47,18 @@ inline double dihedral_normal_angle(const Face_frame& a, const Face_frame& b)
 
 // See select_sharp_edge_constraints(). `vpm` gives the points, `np` goes to
 // detect_sharp_edges() (vertex_point_map, geom_traits).
+// `with_border`: border edges are kept too; `feature_edge(e, kept)` is called
+// once per edge, after the faces' checks, with whether it was kept.
 template <typename TriangleMesh, typename VertexPointMap, typename FaceDescriptor, typename Vector_3,
-          typename NamedParameters>
+          typename NamedParameters, typename FeatureEdgeOutput>
 Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
                                          double angle_in_degrees,
                                          std::size_t maximum_vectors_per_face,
                                          VertexPointMap vpm,
+                                         bool with_border,
                                          std::vector<Face_constraint<FaceDescriptor, Vector_3> >& out,
-                                         const NamedParameters& np)
+                                         const NamedParameters& np,
+                                         FeatureEdgeOutput feature_edge)
 {
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::face_descriptor face_descriptor;
@@ -86,23 +90,31 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
   CGAL::Polygon_mesh_processing::detect_sharp_edges(tm, typename Geom_traits::FT(angle_in_degrees), is_sharp, np);
   const double threshold = angle_in_degrees * CGAL_PI / 180.0;
 
-  // (dihedral angle, unit direction) of the sharp edges of each face, in the order of edges(tm).
+  // (dihedral angle, unit direction) of the sharp edges of each face, in the order of edges(tm);
+  // a border edge, with boundary_alignment, counts as the sharpest (angle pi).
   std::vector<std::vector<std::pair<double, std::array<double, 3> > > > edges_of_face(face_list.size());
   for(edge_descriptor e : edges(tm))
   {
     const auto h = halfedge(e, tm);
-    if(CGAL::is_border_edge(h, tm) || !get(is_sharp, e))
-      continue;
-    const std::size_t f = face_index(face(h, tm)), g = face_index(face(opposite(h, tm), tm));
-    const double angle = dihedral_normal_angle(frames[f], frames[g]);
-    if(angle <= threshold)
+    double angle = CGAL_PI;
+    bool kept = false;
+    if(CGAL::is_border_edge(h, tm))
+      kept = with_border;
+    else if(get(is_sharp, e))
+    {
+      angle = dihedral_normal_angle(frames[face_index(face(h, tm))], frames[face_index(face(opposite(h, tm), tm))]);
+      kept = angle > threshold;
+    }
+    feature_edge(e, kept);
+    if(!kept)
       continue;
     // The direction, scaled first so that its squared length cannot overflow.
     std::array<double, 3> d = scaled_difference(to_array(get(vpm, target(h, tm))), to_array(get(vpm, source(h, tm))));
     const double length = std::sqrt(dot(d, d));
     d = { d[0] / length, d[1] / length, d[2] / length };
-    edges_of_face[f].emplace_back(angle, d);
-    edges_of_face[g].emplace_back(angle, d);
+    for(const auto g : { h, opposite(h, tm) })
+      if(!CGAL::is_border(g, tm))
+        edges_of_face[face_index(face(g, tm))].emplace_back(angle, d);
   }
 
   std::vector<Face_constraint<FaceDescriptor, Vector_3> > result;

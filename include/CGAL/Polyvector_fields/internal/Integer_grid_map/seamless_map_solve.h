@@ -15,6 +15,7 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/comb_and_cut.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/feature_alignment.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/map_check.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/mixed_integer_solve.h>
@@ -108,17 +109,18 @@ void assemble_guidance(const CornerMesh& M, const Comb_data& D, const Seamless_r
     // U_c contributes grad.x to row_x+0 (dU/dx) and grad.y to row_x+1; V_c to row_y, row_y+1
     for(const auto& term : R.corner_terms[c])
     {
-      // U = Re(coef * z), V = Im(coef * z), z = (column, column + 1)
-      const double p = term.re, q = term.im;
+      // the column moves U_c by term.u and V_c by term.v
       const Eigen::Index col = Eigen::Index(term.column);
-      triplets.emplace_back(Eigen::Index(row_x), col, s * p * grad.real());
-      triplets.emplace_back(Eigen::Index(row_x + 1), col, s * p * grad.imag());
-      triplets.emplace_back(Eigen::Index(row_x), col + 1, -s * q * grad.real());
-      triplets.emplace_back(Eigen::Index(row_x + 1), col + 1, -s * q * grad.imag());
-      triplets.emplace_back(Eigen::Index(row_y), col, s * q * grad.real());
-      triplets.emplace_back(Eigen::Index(row_y + 1), col, s * q * grad.imag());
-      triplets.emplace_back(Eigen::Index(row_y), col + 1, s * p * grad.real());
-      triplets.emplace_back(Eigen::Index(row_y + 1), col + 1, s * p * grad.imag());
+      if(term.u != 0)
+      {
+        triplets.emplace_back(Eigen::Index(row_x), col, s * term.u * grad.real());
+        triplets.emplace_back(Eigen::Index(row_x + 1), col, s * term.u * grad.imag());
+      }
+      if(term.v != 0)
+      {
+        triplets.emplace_back(Eigen::Index(row_y), col, s * term.v * grad.real());
+        triplets.emplace_back(Eigen::Index(row_y + 1), col, s * term.v * grad.imag());
+      }
     }
   };
   for(std::size_t f = 0; f < F; ++f)
@@ -151,10 +153,7 @@ inline void corner_uv(const Seamless_reduction& R, const Eigen::VectorXd& y, std
   uv.assign(C, Complex(0));
   for(std::size_t c = 0; c < C; ++c)
     for(const auto& term : R.corner_terms[c])
-    {
-      const Complex z(y[Eigen::Index(term.column)], y[Eigen::Index(term.column + 1)]);
-      uv[c] += Complex(term.re, term.im) * z;
-    }
+      uv[c] += Complex(term.u, term.v) * y[Eigen::Index(term.column)];
 }
 
 inline void map_jacobian(const Guidance_system& S, std::size_t f, const std::vector<Complex>& uv, double J[4])
@@ -345,9 +344,9 @@ std::size_t exact_seam_transitions(const CornerMesh& M, const Comb_data& D, cons
       form.emplace_back(column, coefficient);
     };
     for(const auto& term : R.corner_terms[b])
-      add(term.column, Gint(std::llround(term.re), std::llround(term.im)));
+      add(term.column, Gint(std::llround(term.u), std::llround(term.v)));
     for(const auto& term : R.corner_terms[a])
-      add(term.column, -(rot * Gint(std::llround(term.re), std::llround(term.im))));
+      add(term.column, -(rot * Gint(std::llround(term.u), std::llround(term.v))));
     Gint t;
     for(const auto& x : form)
     {
@@ -358,7 +357,7 @@ std::size_t exact_seam_transitions(const CornerMesh& M, const Comb_data& D, cons
         ++inconsistencies;
         continue;
       }
-      t = t + x.second * Gint(std::llround(y[Eigen::Index(x.first)]), std::llround(y[Eigen::Index(x.first + 1)]));
+      t = t + x.second * Gint(std::llround(y[Eigen::Index(x.first)]), 0);
     }
     return t;
   };
@@ -404,6 +403,8 @@ Error_code write_snapped_map(const CornerMesh& M, const Comb_data& D, const Seam
     result.diagnostic = "the seam transitions could not be computed exactly from the integer unknowns";
   else
     result.diagnostic = check_integer_grid_map(M, D, uv, result.seam_transitions);
+  if(result.diagnostic.empty())
+    result.diagnostic = check_feature_alignment(M, R.feature_coordinate, uv);
   if(!result.diagnostic.empty())
   {
     result.seam_transitions.clear();

@@ -51,19 +51,27 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-// uv_c = sum over terms of (re + i im) * (y[column] + i y[column + 1])
+// uv_c = sum over terms of (u, v) * y[column]: each real unknown moves the
+// corner's value along an integer vector (a unit one for a vertex's own unknowns).
 struct Corner_term
 {
   std::size_t column;
-  double re, im;
+  double u, v;
 };
 
+// The columns are the continuous unknowns first (columns 0 .. continuous_columns - 1),
+// then the integer ones. reduce_seamless_variables() gives two continuous columns
+// per regular vertex (its first sector's u and v) and two integer ones per complex
+// integer variable; align_features() (feature_alignment.h) then makes some of them integer
+// and eliminates others.
 struct Seamless_reduction
 {
-  std::size_t continuous_vertices = 0;   // complex continuous unknowns
-  std::size_t integer_variables = 0;     // complex integer unknowns (after elimination and pins)
+  std::size_t continuous_columns = 0;    // real continuous unknowns
+  std::size_t integer_columns = 0;       // real integer unknowns (after elimination and pins)
   std::vector<std::vector<Corner_term> > corner_terms;  // per corner
   std::vector<int> vertex_kind;          // 0 continuous, 1 singular (integer), 2 pinned regular, 3 isolated
+  std::vector<signed char> feature_coordinate;  // per corner: the coordinate (0: U, 1: V) constant along edge(c)
+                                                // on an integer iso-line; -1: none, -2: a feature left free
   std::size_t inconsistencies = 0;
   std::size_t extra_relations = 0;
 };
@@ -347,6 +355,7 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
     if(pinned_singular[comp] != npos)
       substitution[vertex_var[pinned_singular[comp]]] = Gform();
   std::vector<std::size_t> column_of_vertex(V, npos);
+  std::size_t continuous_vertices = 0;
   for(std::size_t v = 0; v < V; ++v)
   {
     if(M.vertex_corner[v] == npos)
@@ -359,14 +368,15 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
     else
     {
       R.vertex_kind[v] = 0;
-      column_of_vertex[v] = 2 * R.continuous_vertices++;
+      column_of_vertex[v] = 2 * continuous_vertices++;
     }
   }
-  const std::size_t nx = 2 * R.continuous_vertices;
+  const std::size_t nx = 2 * continuous_vertices;
+  std::size_t integer_variables = 0;
   std::vector<std::size_t> column_of_var(vars, npos);
   for(std::size_t j = 0; j < vars; ++j)
     if(!substitution.count(j))
-      column_of_var[j] = nx + 2 * R.integer_variables++;
+      column_of_var[j] = nx + 2 * integer_variables++;
 
   // 6. Corner terms.
   R.corner_terms.assign(C, std::vector<Corner_term>());
@@ -381,11 +391,18 @@ Error_code reduce_seamless_variables(const CornerMesh& M, const Comb_data& D, Se
       add_scaled(W, Gform{ { vertex_var[v], Gint(1, 0) } }, rot);
     W = resolve(W);
     auto& terms = R.corner_terms[c];
+    // (p + iq)(y0 + i y1): y0 moves uv by (p, q), y1 by (-q, p)
+    auto add_complex = [&terms](std::size_t column, Gint coefficient) {
+      terms.push_back(Corner_term{ column, double(coefficient.re), double(coefficient.im) });
+      terms.push_back(Corner_term{ column + 1, -double(coefficient.im), double(coefficient.re) });
+    };
     if(R.vertex_kind[v] == 0)
-      terms.push_back(Corner_term{ column_of_vertex[v], double(rot.re), double(rot.im) });
+      add_complex(column_of_vertex[v], rot);
     for(const auto& kv : W)
-      terms.push_back(Corner_term{ column_of_var[kv.first], double(kv.second.re), double(kv.second.im) });
+      add_complex(column_of_var[kv.first], kv.second);
   }
+  R.continuous_columns = nx;
+  R.integer_columns = 2 * integer_variables;
   return Error_code::SUCCESS;
 }
 

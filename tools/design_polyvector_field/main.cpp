@@ -55,7 +55,7 @@ int run(const Options& o)
   check(bundle.status(), "mesh '" + o.mesh + "'");
   clock.lap("frames and connection");
   Curvature curvature;
-  const Constraint_set constraints = gather_constraints(o, input, bundle, curvature, clock);
+  const Constraint_set constraints = gather_constraints(o, input, size, bundle, curvature, clock);
   const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
   const Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);

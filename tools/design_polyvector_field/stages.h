@@ -104,6 +104,22 @@ struct Quad_size
 // triangles, a 50-face scan) gets a useful quad mesh.
 constexpr double default_minimum_quads = 1000;
 
+// The dihedral angle above which an edge is sharp. With the boundary alone,
+// only a fold of nearly 180 degrees (a degenerate crease) counts as sharp.
+double crease_degrees(const Options& o) { return o.sharp_degrees >= 0 ? o.sharp_degrees : 179.9; }
+
+// With a map, creases shorter than this many quads in all (noise on a scan: a
+// quad mesh cannot follow them) are not features.
+constexpr double minimum_crease_quads = 3;
+
+// The named parameters of the sharp edges: the border with boundary alignment,
+// and with a map, the shortest crease network kept.
+auto feature_parameters(const Options& o, double quad_size)
+{
+  return PVF::parameters::boundary_alignment(
+    o.boundary_alignment, PVF::parameters::minimum_feature_length(o.parametrize ? minimum_crease_quads * quad_size : 0.0));
+}
+
 Quad_size choose_quad_size(const Options& o, Input_mesh& input)
 {
   Quad_size q;
@@ -131,7 +147,20 @@ Quad_size choose_quad_size(const Options& o, Input_mesh& input)
   std::vector<std::size_t> origin = input.report.source_face;
   if(origin.size() != num_faces(tm))
     origin.clear();
-  check(PVF::refine_for_quad_size(tm, q.h, origin), "refinement");
+  if(o.sharp_degrees >= 0 || o.boundary_alignment)
+  {
+    // The features, so that the refinement splits the edges between them
+    // (the constraints stage finds the same edges on the refined mesh).
+    const auto features = tm.add_property_map<Mesh::Edge_index, bool>("e:pvf_feature", false).first;
+    std::vector<Constraint> unused;
+    const auto np = feature_parameters(o, q.h);
+    check(PVF::select_sharp_edge_constraints(tm, crease_degrees(o), o.vectors_per_constraint(), unused,
+                                             np.edge_is_constrained_map(features)),
+          "sharp edges");
+    check(PVF::refine_for_quad_size(tm, q.h, origin, np.edge_is_constrained_map(features)), "refinement");
+  }
+  else
+    check(PVF::refine_for_quad_size(tm, q.h, origin), "refinement");
   q.faces_after = num_faces(tm);
   if(q.refined())
     input.report.source_face = origin;
@@ -239,21 +268,20 @@ Curvature& estimate_curvature(Mesh& tm, const Bundle& bundle, Curvature& curvatu
   return curvature;
 }
 
-Constraint_set gather_constraints(const Options& o, Input_mesh& input, const Bundle& bundle, Curvature& curvature,
-                                  Stopwatch& clock)
+Constraint_set gather_constraints(const Options& o, Input_mesh& input, const Quad_size& size, const Bundle& bundle,
+                                  Curvature& curvature, Stopwatch& clock)
 {
   Constraint_set set;
   add_file_constraints(o, input, set);
   add_random_constraints(o, input.tm, set);
   if(o.sharp_degrees >= 0 || o.boundary_alignment)
   {
-    // Faces already constrained are left alone. With the boundary alone, only
-    // a fold of nearly 180 degrees (a degenerate crease) counts as sharp.
+    // Faces already constrained are left alone.
     std::vector<Constraint> sharp;
-    const double degrees = o.sharp_degrees >= 0 ? o.sharp_degrees : 179.9;
+    const double degrees = crease_degrees(o);
     if(o.parametrize)
       set.features = input.tm.add_property_map<Mesh::Edge_index, bool>("e:pvf_feature", false).first;
-    const auto np = PVF::parameters::boundary_alignment(o.boundary_alignment);
+    const auto np = feature_parameters(o, size.h);
     check(set.features ? PVF::select_sharp_edge_constraints(input.tm, degrees, o.vectors_per_constraint(), sharp,
                                                             np.edge_is_constrained_map(*set.features))
                        : PVF::select_sharp_edge_constraints(input.tm, degrees, o.vectors_per_constraint(), sharp, np),

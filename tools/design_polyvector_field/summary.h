@@ -157,6 +157,9 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                 << " feature edges (sharp" << (o.boundary_alignment ? " and border" : "") << ") on integer iso-lines, "
                 << r.feature_corners << " feature corners on integer points; " << r.unaligned_feature_edges
                 << " left free (the field does not follow them)"
+                << (r.released_feature_edges
+                      ? ", " + std::to_string(r.released_feature_edges) + " left free because faces beside them folded"
+                      : std::string())
                 << (r.dropped_feature_edges ? ", " + std::to_string(r.dropped_feature_edges) + " with no integer solution"
                                             : std::string());
     const auto old_flags = std::cout.flags();

@@ -31,6 +31,7 @@
 #  include <Eigen/CholmodSupport>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
@@ -87,6 +88,7 @@ struct Integer_grid_map_result
   std::size_t aligned_feature_edges = 0;  ///< of them, on an integer iso-line of the map (exactly)
   std::size_t unaligned_feature_edges = 0;///< of them, left free because the field does not run along them (within `max_feature_angle`)
   std::size_t dropped_feature_edges = 0;  ///< of them, left free because their relation could not be eliminated over the integers (expected 0)
+  std::size_t released_feature_edges = 0; ///< of them, left free because faces around them stayed flipped with them aligned (see <b>Features</b>)
   std::size_t feature_vertices = 0;       ///< vertices on an aligned feature edge
   std::size_t feature_corners = 0;        ///< of them, regular vertices put on an integer point because the field follows two feature curves there
   std::size_t flipped_faces = 0;          ///< faces with det(grad uv) <= 0 in the output
@@ -167,42 +169,62 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
   result.faces = M.F;
   result.inconsistencies += D.pruned_nonzero_rotation + (D.matching_inconsistent ? 1 : 0);
 
-  // reduced unknowns, guidance system, rounds of solves
-  auto t = std::chrono::steady_clock::now();
-  internal::Seamless_reduction R;
-  code = internal::reduce_seamless_variables(M, D, R);
-  result.inconsistencies += R.inconsistencies;
-  result.extra_integer_relations = R.extra_relations;
-  if(code != Error_code::SUCCESS)
-    return code;
+  // reduced unknowns, guidance system, rounds of solves; with features, again
+  // without the features around faces that stay flipped (see Features)
   std::vector<char> feature;
-  if(internal::feature_corners(M, np, feature))
-  {
-    internal::Feature_alignment_report features;
-    internal::align_features(M, D, feature, internal::max_feature_angle, R, features);
-    result.feature_edges = features.feature_edges;
-    result.aligned_feature_edges = features.aligned_edges;
-    result.unaligned_feature_edges = features.unaligned_edges;
-    result.dropped_feature_edges = features.dropped_edges;
-    result.feature_vertices = features.feature_vertices;
-    result.feature_corners = features.feature_corners;
-  }
-  const std::size_t nx = R.continuous_columns, m = R.integer_columns;
-  result.continuous_unknowns = nx;
-  result.integer_unknowns = m;
-  result.integer_unknowns_before_reduction = 2 * (result.comb.singular_vertices + result.comb.seam_curves);
-  result.time_reduction = internal::seconds_since(t);
-  t = std::chrono::steady_clock::now();
+  const bool has_features = internal::feature_corners(M, np, feature);
+  internal::Seamless_reduction R;
   internal::Guidance_system S;
-  internal::assemble_guidance(M, D, R, h, nx + m, S);
-  result.time_assembly += internal::seconds_since(t);
   Eigen::VectorXd y;
-  code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R, y, result);
-  if(code != Error_code::SUCCESS)
-    return code;
+  std::size_t nx = 0, m = 0;
+  for(std::size_t attempt = 0;; ++attempt)
+  {
+    auto t = std::chrono::steady_clock::now();
+    R = internal::Seamless_reduction();
+    code = internal::reduce_seamless_variables(M, D, R);
+    result.inconsistencies += R.inconsistencies;
+    result.extra_integer_relations = R.extra_relations;
+    if(code != Error_code::SUCCESS)
+      return code;
+    if(has_features)
+    {
+      internal::Feature_alignment_report features;
+      internal::align_features(M, D, feature, internal::max_feature_angle, R, features);
+      result.aligned_feature_edges = features.aligned_edges;
+      result.unaligned_feature_edges = features.unaligned_edges;
+      result.dropped_feature_edges = features.dropped_edges;
+      result.feature_vertices = features.feature_vertices;
+      result.feature_corners = features.feature_corners;
+      if(attempt == 0)
+        result.feature_edges = features.feature_edges;
+    }
+    nx = R.continuous_columns;
+    m = R.integer_columns;
+    result.continuous_unknowns = nx;
+    result.integer_unknowns = m;
+    result.integer_unknowns_before_reduction = 2 * (result.comb.singular_vertices + result.comb.seam_curves);
+    result.time_reduction += internal::seconds_since(t);
+    t = std::chrono::steady_clock::now();
+    S = internal::Guidance_system();
+    internal::assemble_guidance(M, D, R, h, nx + m, S);
+    result.time_assembly += internal::seconds_since(t);
+    result.flipped_per_round.clear();
+    result.stiffening_rounds = 0;
+    code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R, y, result);
+    if(code != Error_code::SUCCESS)
+      return code;
+    if(!has_features || result.flipped_per_round.empty() ||
+       *std::min_element(result.flipped_per_round.begin(), result.flipped_per_round.end()) == 0 ||
+       attempt == internal::max_feature_releases)
+      break;
+    const std::size_t released = internal::release_features_near_flips(M, R, S, y, feature);
+    result.released_feature_edges += released;
+    if(released == 0)
+      break;
+  }
 
   // output: snapped to a dyadic grid, so that seams and singularities are exact
-  t = std::chrono::steady_clock::now();
+  const auto t = std::chrono::steady_clock::now();
   code = internal::write_snapped_map(M, D, R, S, nx, m, y, uv_map, result);
   result.time_output = internal::seconds_since(t);
   result.time_total = internal::seconds_since(start);
@@ -254,8 +276,11 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// with an orthogonal frame), only the curve that the field follows is on an
 /// iso-line. Design the field with the features as constraints first, so
 /// that it follows them. Features closer to each other than about half a quad
-/// are put on the same or neighbouring iso-lines, which can fold the faces
-/// between them: the quad size must resolve the features.
+/// are put on the same or neighbouring iso-lines, which fold the faces
+/// between them: when faces stay flipped after the stiffening, the feature
+/// edges with an endpoint on a flipped face are left free and the map is
+/// solved again, at most 3 times (`released_feature_edges`). The quad size
+/// must resolve the features for them all to be kept.
 ///
 /// <b>Solve.</b> The continuous block is factored once per round (sparse SPD,
 /// `sparse_linear_solver`); the integer unknowns are eliminated through their

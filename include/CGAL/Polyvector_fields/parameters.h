@@ -88,6 +88,9 @@ CGAL_PVF_ADD_NAMED_PARAMETER(singularity_cancellation_distance_t, singularity_ca
 // `bool`: the border edges are features too: the field follows them (select_sharp_edge_constraints())
 // and the map puts them on integer iso-lines (compute_integer_grid_map()); default `false`.
 CGAL_PVF_ADD_NAMED_PARAMETER(boundary_alignment_t, boundary_alignment, boundary_alignment)
+// `double >= 0`, in mesh units: networks of sharp edges shorter than this are not features
+// (select_sharp_edge_constraints()); default 0: every sharp edge is one.
+CGAL_PVF_ADD_NAMED_PARAMETER(minimum_feature_length_t, minimum_feature_length, minimum_feature_length)
 
 // `double > 0`: the length, in mesh units, of one unit of uv along the unit field directions (the quad size).
 CGAL_PVF_ADD_NAMED_PARAMETER(target_edge_length_t, target_edge_length, target_edge_length)

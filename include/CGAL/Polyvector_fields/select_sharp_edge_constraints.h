@@ -79,6 +79,14 @@ namespace Polyvector_fields {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_feature_length}
+///     \cgalParamDescription{sharp edges connected to each other (through their vertices) whose total
+///                           length is below this are dropped: on a scan, short creases of a few edges
+///                           are noise that a quad mesh cannot follow; the border is always kept; given
+///                           with `Polyvector_fields::parameters::minimum_feature_length()`}
+///     \cgalParamType{`double >= 0`, in mesh units}
+///     \cgalParamDefault{0: every sharp edge is kept}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map}
 ///     \cgalParamDescription{receives, for every edge, whether it was kept (written on success only)}
 ///     \cgalParamType{a model of `WritablePropertyMap` from `boost::graph_traits<TriangleMesh>::%edge_descriptor` to `bool`}
@@ -92,8 +100,8 @@ namespace Polyvector_fields {
 /// \cgalNamedParamsEnd
 ///
 /// \returns
-/// - `Error_code::INVALID_PARAMETER` if `angle_in_degrees` is not in `[0, 180)` (NaN included) or
-///   `maximum_vectors_per_face` is 0;
+/// - `Error_code::INVALID_PARAMETER` if `angle_in_degrees` is not in `[0, 180)` (NaN included),
+///   `maximum_vectors_per_face` is 0 or `minimum_feature_length` is negative or NaN;
 /// - `Error_code::EMPTY_MESH` if `tm` has no face;
 /// - `Error_code::NON_TRIANGLE_FACE` if a face is not a triangle;
 /// - `Error_code::DEGENERATE_FACE` if a face has zero area or a non-finite coordinate;
@@ -119,16 +127,19 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     CGAL::get_const_property_map(CGAL::vertex_point, tm));
   const bool with_border = choose_parameter(get_parameter(np, internal_np::boundary_alignment), false);
+  const double minimum_length = choose_parameter(get_parameter(np, internal_np::minimum_feature_length), 0.0);
+  if(!(minimum_length >= 0))
+    return Error_code::INVALID_PARAMETER;
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
-    return internal::select_sharp_edge_constraints(tm, angle_in_degrees, maximum_vectors_per_face, vpm, with_border, out,
-                                                   np, [](edge_descriptor, bool) {});
+    return internal::select_sharp_edge_constraints(tm, angle_in_degrees, maximum_vectors_per_face, vpm, with_border,
+                                                   minimum_length, out, np, [](edge_descriptor, bool) {});
   else
   {
     // the map is written only on success
     std::vector<std::pair<edge_descriptor, bool> > flags;
     const Error_code code = internal::select_sharp_edge_constraints(
-      tm, angle_in_degrees, maximum_vectors_per_face, vpm, with_border, out, np,
+      tm, angle_in_degrees, maximum_vectors_per_face, vpm, with_border, minimum_length, out, np,
       [&flags](edge_descriptor e, bool kept) { flags.emplace_back(e, kept); });
     if(code == Error_code::SUCCESS)
     {

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -47,7 +48,8 @@ inline double dihedral_normal_angle(const Face_frame& a, const Face_frame& b)
 
 // See select_sharp_edge_constraints(). `vpm` gives the points, `np` goes to
 // detect_sharp_edges() (vertex_point_map, geom_traits).
-// `with_border`: border edges are kept too; `feature_edge(e, kept)` is called
+// `with_border`: border edges are kept too; networks of sharp edges shorter
+// than `minimum_length` are dropped; `feature_edge(e, kept)` is called
 // once per edge, after the faces' checks, with whether it was kept.
 template <typename TriangleMesh, typename VertexPointMap, typename FaceDescriptor, typename Vector_3,
           typename NamedParameters, typename FeatureEdgeOutput>
@@ -56,6 +58,7 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
                                          std::size_t maximum_vectors_per_face,
                                          VertexPointMap vpm,
                                          bool with_border,
+                                         double minimum_length,
                                          std::vector<Face_constraint<FaceDescriptor, Vector_3> >& out,
                                          const NamedParameters& np,
                                          FeatureEdgeOutput feature_edge)
@@ -63,6 +66,7 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::face_descriptor face_descriptor;
   typedef typename Graph_traits::edge_descriptor edge_descriptor;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
 
   // The faces, numbered in the order of faces(tm), with their frames.
@@ -90,31 +94,90 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
   CGAL::Polygon_mesh_processing::detect_sharp_edges(tm, typename Geom_traits::FT(angle_in_degrees), is_sharp, np);
   const double threshold = angle_in_degrees * CGAL_PI / 180.0;
 
-  // (dihedral angle, unit direction) of the sharp edges of each face, in the order of edges(tm);
-  // a border edge, with boundary_alignment, counts as the sharpest (angle pi).
-  std::vector<std::vector<std::pair<double, std::array<double, 3> > > > edges_of_face(face_list.size());
+  // The kept edges with their angle: a border edge, with boundary_alignment,
+  // counts as the sharpest (angle pi).
+  struct Kept
+  {
+    edge_descriptor e;
+    double angle;
+    bool border;
+  };
+  std::vector<Kept> kept;
+  std::vector<edge_descriptor> all_edges;
   for(edge_descriptor e : edges(tm))
   {
+    all_edges.push_back(e);
     const auto h = halfedge(e, tm);
-    double angle = CGAL_PI;
-    bool kept = false;
     if(CGAL::is_border_edge(h, tm))
-      kept = with_border;
+    {
+      if(with_border)
+        kept.push_back(Kept{ e, CGAL_PI, true });
+    }
     else if(get(is_sharp, e))
     {
-      angle = dihedral_normal_angle(frames[face_index(face(h, tm))], frames[face_index(face(opposite(h, tm), tm))]);
-      kept = angle > threshold;
+      const double angle =
+        dihedral_normal_angle(frames[face_index(face(h, tm))], frames[face_index(face(opposite(h, tm), tm))]);
+      if(angle > threshold)
+        kept.push_back(Kept{ e, angle, false });
     }
-    feature_edge(e, kept);
-    if(!kept)
-      continue;
+  }
+  // Networks of sharp edges (connected through their vertices) shorter than
+  // minimum_length in all are noise, not creases: dropped. The border stays.
+  if(minimum_length > 0)
+  {
+    std::map<vertex_descriptor, std::size_t> parent;
+    std::vector<std::size_t> up;
+    auto node = [&](vertex_descriptor v) {
+      const auto inserted = parent.emplace(v, up.size());
+      if(inserted.second)
+        up.push_back(up.size());
+      return inserted.first->second;
+    };
+    auto root = [&up](std::size_t x) {
+      while(up[x] != x)
+        x = up[x] = up[up[x]];
+      return x;
+    };
+    for(const Kept& k : kept)
+      if(!k.border)
+      {
+        const auto h = halfedge(k.e, tm);
+        const std::size_t a = root(node(source(h, tm))), b = root(node(target(h, tm)));
+        up[a] = b;
+      }
+    std::vector<double> length(up.size(), 0);
+    auto edge_length = [&](edge_descriptor e) {
+      const auto h = halfedge(e, tm);
+      const auto d = scaled_difference(to_array(get(vpm, target(h, tm))), to_array(get(vpm, source(h, tm))));
+      return std::sqrt(dot(d, d));
+    };
+    for(const Kept& k : kept)
+      if(!k.border)
+        length[root(node(source(halfedge(k.e, tm), tm)))] += edge_length(k.e);
+    kept.erase(std::remove_if(kept.begin(), kept.end(),
+                              [&](const Kept& k) {
+                                return !k.border && length[root(node(source(halfedge(k.e, tm), tm)))] < minimum_length;
+                              }),
+               kept.end());
+  }
+  std::set<edge_descriptor> kept_set;
+  for(const Kept& k : kept)
+    kept_set.insert(k.e);
+  for(edge_descriptor e : all_edges)
+    feature_edge(e, kept_set.count(e) > 0);
+
+  // (dihedral angle, unit direction) of the kept edges of each face, in the order of edges(tm).
+  std::vector<std::vector<std::pair<double, std::array<double, 3> > > > edges_of_face(face_list.size());
+  for(const Kept& k : kept)
+  {
+    const auto h = halfedge(k.e, tm);
     // The direction, scaled first so that its squared length cannot overflow.
     std::array<double, 3> d = scaled_difference(to_array(get(vpm, target(h, tm))), to_array(get(vpm, source(h, tm))));
     const double length = std::sqrt(dot(d, d));
     d = { d[0] / length, d[1] / length, d[2] / length };
     for(const auto g : { h, opposite(h, tm) })
       if(!CGAL::is_border(g, tm))
-        edges_of_face[face_index(face(g, tm))].emplace_back(angle, d);
+        edges_of_face[face_index(face(g, tm))].emplace_back(k.angle, d);
   }
 
   std::vector<Face_constraint<FaceDescriptor, Vector_3> > result;

@@ -204,6 +204,37 @@ inline std::size_t flipped_faces(const Guidance_system& S, const std::vector<Com
   return count;
 }
 
+// Solves after the first one in which the features near flipped faces are left free.
+constexpr std::size_t max_feature_releases = 3;
+
+// Leaves free every feature edge with an endpoint on a face that the map y
+// flips (both corners of the edge); returns the number of edges released.
+template <typename CornerMesh>
+std::size_t release_features_near_flips(const CornerMesh& M, const Seamless_reduction& R, const Guidance_system& S,
+                                        const Eigen::VectorXd& y, std::vector<char>& feature)
+{
+  std::vector<std::complex<double> > uv;
+  std::vector<char> flag;
+  corner_uv(R, y, uv);
+  flipped_faces(S, uv, flag);
+  std::vector<char> near(M.V, 0);
+  for(std::size_t f = 0; f < M.F; ++f)
+    if(flag[f])
+      for(std::size_t k = 0; k < 3; ++k)
+        near[M.target[3 * f + k]] = 1;
+  std::size_t released = 0;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    if(feature[c] && R.feature_coordinate[c] >= 0 && (near[M.target[c]] || near[M.source(c)]))
+    {
+      const std::size_t o = M.opposite[c];
+      ++released;  // the other side, cleared here, is not counted again
+      feature[c] = 0;
+      if(o != npos)
+        feature[o] = 0;
+    }
+  return released;
+}
+
 // The largest weight stiffening gives a face (the others start at 1). Without
 // a bound, faces that stay flipped round after round see their weight
 // multiplied by at least 2 per round: after 20 rounds on cow.off (5234

@@ -35,9 +35,11 @@ namespace Polyvector_fields {
 struct Angle_bound_result
 {
   std::size_t iterations = 0;  ///< global steps done
-  bool converged = false;      ///< every face that is not fixed by a hard full constraint is within the bound
+  bool converged = false;      ///< the iterations brought every free face (not fixed by a hard full constraint) to within `tolerance` of the bound, and the final projection to the bound
   double minimum_angle = 0;    ///< smallest frame angle over all faces of the result, in radians
-  double minimum_free_angle = 0;  ///< smallest frame angle over the faces not fixed by a hard full constraint
+  double minimum_free_angle = 0;  ///< smallest frame angle over the free faces of the result (after the final projection), in radians: at least the bound (up to 1e-12 radian of rounding) when the function succeeds
+  double minimum_free_angle_before_projection = 0;  ///< smallest frame angle over the free faces after the last global step, before the final projection, in radians
+  std::size_t projected_faces = 0;  ///< free faces below the bound after the iterations, turned onto it by the final projection
   std::size_t factorizations = 0;  ///< numerical factorizations of the global steps (one per new `lambda`; none at the cap)
 };
 
@@ -55,6 +57,11 @@ struct Angle_bound_result
 /// weight `lambda`, multiplied by `lambda_factor` at each iteration) while
 /// keeping the hard constraints of the design of `field`. It stops when a global step leaves every face
 /// within the bound, up to `tolerance`, or after `number_of_iterations` steps.
+/// Then every free face still below the bound (by at most `tolerance`) is projected onto it
+/// exactly, as the local step does; on a face held by a hard partial constraint, the
+/// constrained vector stays and the other one turns. So on success every free face has a frame
+/// angle of at least `theta_min` (up to 1e-12 radian of rounding, see
+/// `Angle_bound_result::minimum_free_angle`); the function never returns `SUCCESS` otherwise.
 /// Faces fixed by a hard full constraint are not changed, even if the
 /// constraint itself is below the bound (see `Angle_bound_result::minimum_angle`).
 /// The user manual's section "Angle-bounded frame fields" states the local step.
@@ -76,7 +83,9 @@ struct Angle_bound_result
 ///     \cgalParamDefault{70 degrees}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{tolerance}
-///     \cgalParamDescription{how far below the bound, in radians, a face may stay at convergence, `>= 0`.
+///     \cgalParamDescription{how far below the bound, in radians, the iterations may leave a free face before
+///                           the final projection turns it onto the bound, `>= 0`: it trades smoothness near
+///                           the bound for iterations, never the bound itself.
 ///                           The last fraction of a degree costs most of the iterations (on the Stanford bunny with
 ///                           20 random constraints and a 70-degree bound: 3 iterations to within 0.5 degree, 9 to
 ///                           within 0.06 degree, 32 to within 1e-7 radian)}
@@ -92,8 +101,9 @@ struct Angle_bound_result
 ///   \pvfLocalGlobalParams{200}
 /// \cgalNamedParamsEnd
 ///
-/// \returns `SUCCESS`; `DID_NOT_CONVERGE` when some free face is still below the bound after the
-///          iterations (then `field` and `result` hold the field of the last step and its report);
+/// \returns `SUCCESS` (every free face at or above the bound); `DID_NOT_CONVERGE` when some free face is still
+///          more than `tolerance` below the bound after the iterations (then `field` and `result` hold the field
+///          of the last step, not projected, and its report);
 ///          `NOT_A_FRAME_FIELD` if `field` is not a frame field; `INVALID_PARAMETER` or `NON_FINITE_VALUE`
 ///          for a bad parameter; or `SOLVER_FAILURE`. On any other failure `field` and `result` are not written.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TangentBundle,

@@ -112,6 +112,9 @@ CGAL_PVF_ADD_NAMED_PARAMETER(closeness_weight_t, closeness_weight, closeness_wei
 CGAL_PVF_ADD_NAMED_PARAMETER(fairness_weight_t, fairness_weight, fairness_weight)
 // `double` in (0, 1]: the factor applied at each iteration of `planarize_quad_mesh()` to the pull towards the surface and to the fairness target; default 0.9.
 CGAL_PVF_ADD_NAMED_PARAMETER(closeness_decay_t, closeness_decay, closeness_decay)
+// `double > 0`, in mesh units: the largest distance from a vertex of the result of `planarize_quad_mesh()`
+// to the reference surface; default 5% of the mean edge length of the input quad mesh.
+CGAL_PVF_ADD_NAMED_PARAMETER(max_distance_to_surface_t, max_distance_to_surface, max_distance_to_surface)
 
 // Curvature estimation and curvature constraints.
 CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)

@@ -42,9 +42,10 @@ struct Planarization_result
   double mean_planarity_before = 0;            ///< mean face planarity of the input
   double max_planarity_after = 0;              ///< largest face planarity of the last iterate
   double mean_planarity_after = 0;             ///< mean face planarity of the last iterate
-  double max_distance = 0;                     ///< largest distance of a vertex of the last iterate to the reference surface
+  double max_distance = 0;                     ///< largest distance of a vertex of the last iterate to the reference surface: the worst distance, at most `distance_bound` on success
   double mean_distance = 0;                    ///< mean distance of the vertices of the last iterate to the reference surface
   double max_distance_before = 0;              ///< largest distance of an input vertex to the reference surface
+  double distance_bound = 0;                   ///< `max_distance_to_surface` used: the largest `max_distance` a success allows
   double mean_edge_length = 0;                 ///< mean edge length of the input quad mesh
   double max_displacement = 0;                 ///< largest vertex motion
   std::size_t fairness_rows = 0;               ///< second differences in the fairness term
@@ -61,7 +62,8 @@ struct Planarization_result
 ///
 /// moves the vertices of the quad mesh `qm` until the planarity of every face is at
 /// most `planarity_threshold`, keeping them close to the triangle mesh `reference`
-/// and the mesh fair.
+/// and the mesh fair. The result is checked before it is returned: it is a success only
+/// if no vertex ended farther than `max_distance_to_surface` from `reference`.
 ///
 /// <b>Energy</b> (after Liu et al. 2006): planarity, closeness to the reference and
 /// fairness, `sum_f |C (X_f - P_f)|^2 + wc sum_i |x_i - a_i|^2 + wf sum_j |D_j X - b_j|^2`:
@@ -123,6 +125,15 @@ struct Planarization_result
 ///     \cgalParamType{`double` in `(0, 1]`}
 ///     \cgalParamDefault{0.9}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{max_distance_to_surface}
+///     \cgalParamDescription{the largest distance, in mesh units, from a vertex of the result to `reference`
+///                           (measured to the closest point of its triangles): a planarization that reaches
+///                           `planarity_threshold` by moving a vertex farther is not a success, but
+///                           `Error_code::TOO_FAR_FROM_SURFACE`; given with
+///                           `Polyvector_fields::parameters::max_distance_to_surface()`}
+///     \cgalParamType{`double > 0`}
+///     \cgalParamDefault{5% of the mean edge length of the input quad mesh (`Planarization_result::mean_edge_length`)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the largest number of iterations}
 ///     \cgalParamType{`std::size_t`}
@@ -146,7 +157,9 @@ struct Planarization_result
 /// \returns `Error_code::SUCCESS` (then `qm` holds the planarized mesh); `EMPTY_MESH` (either mesh);
 ///          `NON_QUAD_FACE`; `NON_TRIANGLE_FACE` (reference); `NON_FINITE_VALUE` (a parameter or a coordinate);
 ///          `INVALID_PARAMETER` (a parameter out of its range); `SOLVER_FAILURE`; `DID_NOT_CONVERGE` when
-///          `number_of_iterations` iterations did not reach the threshold. On failure `qm` is left as it was;
+///          `number_of_iterations` iterations did not reach the threshold; `TOO_FAR_FROM_SURFACE` when they
+///          reached it with a vertex farther than `max_distance_to_surface` from `reference`
+///          (`Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
 ///          `result` holds the measurements either way.
 ///
 /// \sa `quad_planarity()`, `extract_quad_mesh()`
@@ -172,6 +185,8 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, P
   p.fairness_weight = choose_parameter(get_parameter(np, internal_np::fairness_weight), p.fairness_weight);
   p.closeness_decay = choose_parameter(get_parameter(np, internal_np::closeness_decay), p.closeness_decay);
   p.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), p.max_iterations);
+  p.distance_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::max_distance_to_surface_t>::value;
+  p.max_distance_to_surface = choose_parameter(get_parameter(np, internal_np::max_distance_to_surface), 0.0);
   const Solver solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver());
   result.threshold = p.threshold;
   const Error_code code = internal::check_planarization_parameters(p);

@@ -80,6 +80,24 @@ enforce_angle_bound(std::complex<double> u, std::complex<double> v, double theta
   return std::make_pair(u * std::conj(turn), v * turn);
 }
 
+/// Enforces the minimal angle `theta_min` on the frame `{u, v, -u, -v}` as
+/// `enforce_angle_bound()` does, but keeps one of the two vectors where it is:
+/// `u` if `keep_u`, else `v`. The other one turns by the whole deficit
+/// `theta_min - theta`, away from the kept one. For a face whose frame a hard
+/// partial constraint holds by one of its vectors.
+inline std::pair<std::complex<double>, std::complex<double> >
+enforce_angle_bound_keeping(std::complex<double> u, std::complex<double> v, double theta_min, bool keep_u)
+{
+  const std::pair<std::complex<double>, std::complex<double> > sym = enforce_angle_bound(u, v, theta_min);
+  if(sym.first == u && sym.second == v)
+    return sym;  // within the bound, or degenerate: unchanged
+  // The symmetric step turned u and v by opposite unit rotations; undo the
+  // kept vector's, on both. |u| = |sym.first| and |v| = |sym.second|.
+  const std::complex<double> back = keep_u ? u / sym.first : v / sym.second;
+  const std::complex<double> unit = back / std::abs(back);
+  return keep_u ? std::make_pair(u, sym.second * unit) : std::make_pair(sym.first * unit, v);
+}
+
 } // namespace internal
 } // namespace Polyvector_fields
 } // namespace CGAL

@@ -55,15 +55,23 @@ struct Planarization_parameters
   double fairness_weight = 0.1;    // wf
   double closeness_decay = 0.9;    // the factor of beta at each iteration
   std::size_t max_iterations = 500;
+  // The largest distance of a vertex of the result to the reference, when
+  // given; otherwise default_distance_fraction of the mean edge length of the
+  // input quad mesh.
+  bool distance_given = false;
+  double max_distance_to_surface = 0;
 };
+
+// The default of max_distance_to_surface, as a fraction of the mean quad edge length.
+constexpr double default_distance_fraction = 0.05;
 
 inline Error_code check_planarization_parameters(const Planarization_parameters& p)
 {
   if(!std::isfinite(p.threshold) || !std::isfinite(p.closeness_weight) || !std::isfinite(p.fairness_weight) ||
-     !std::isfinite(p.closeness_decay))
+     !std::isfinite(p.closeness_decay) || !std::isfinite(p.max_distance_to_surface))
     return Error_code::NON_FINITE_VALUE;
   if(!(p.threshold > 0) || !(p.closeness_weight > 0) || p.fairness_weight < 0 || !(p.closeness_decay > 0) ||
-     p.closeness_decay > 1)
+     p.closeness_decay > 1 || (p.distance_given && !(p.max_distance_to_surface > 0)))
     return Error_code::INVALID_PARAMETER;
   return Error_code::SUCCESS;
 }
@@ -288,6 +296,8 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   const std::size_t n = mesh.descriptors.size();
   Eigen::MatrixXd& X = mesh.X;
   result.mean_edge_length = mesh.mean_edge_length(qm);
+  result.distance_bound = p.distance_given ? p.max_distance_to_surface
+                                                        : default_distance_fraction * result.mean_edge_length;
 
   Timer t;
   Closest_points<TriangleMesh, ReferencePointMap> closest(reference, rpm);
@@ -351,6 +361,10 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   result.time_total = start.elapsed();
   if(!result.converged)
     return Error_code::DID_NOT_CONVERGE;
+  // The result is checked before it is returned: planar faces bought by
+  // leaving the surface are not a success.
+  if(!(dmax <= result.distance_bound))
+    return Error_code::TOO_FAR_FROM_SURFACE;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   for(std::size_t i = 0; i < n; ++i)
     put(vpm, mesh.descriptors[i], Point(X(Eigen::Index(i), 0), X(Eigen::Index(i), 1), X(Eigen::Index(i), 2)));

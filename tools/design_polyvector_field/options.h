@@ -69,8 +69,8 @@ const char* usage =
   "                           --paper-stopping-rule)\n"
   "  --tolerance T            with --conjugate: stop when the mean normalised deviation from conjugacy\n"
   "                           |u^T S v| / (|u| |v| max|k|) of the free faces, weighted by |k1 k2|, is at most T\n"
-  "                           (default 5e-3); with --angle-bound: the angle in degrees that a face may\n"
-  "                           stay below the bound (default 0.5)\n"
+  "                           (default 5e-3); with --angle-bound: how far, in degrees, the iterations may\n"
+  "                           stop below the bound before the free faces are projected onto it (default 0.5)\n"
   "  --max-lambda L           with --conjugate: cap of the weight lambda of the global step (default 1e4)\n"
   "  --paper-stopping-rule    with --conjugate: the paper's rule, sum |u^T S v| < T on the unit-size\n"
   "                           field (default T 1e-4), lambda unbounded\n"
@@ -91,6 +91,9 @@ const char* usage =
   "  --planarize [T]          move the quad vertices until every quad is planar to T (default 0.01,\n"
   "                           the paper's 1%: diagonal distance over mean diagonal length), keeping\n"
   "                           them close to the surface\n"
+  "  --max-surface-distance F with --planarize: a vertex may move at most F mean quad edges away\n"
+  "                           from the surface (default 0.05); a planarization that needs more is\n"
+  "                           reported and the quad mesh is written as extracted\n"
   "output (default when none is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
@@ -138,6 +141,7 @@ struct Options
   double singularity_separation = 1;  // in quads
   std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
   double planarity_threshold = 0;  // 0: no planarization
+  double max_surface_distance = 0.05;  // --max-surface-distance, in mean quad edges
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
 
   bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate || parametrize; }
@@ -219,7 +223,7 @@ private:
 Options parse_options(int argc, char** argv)
 {
   Options o;
-  bool separation_given = false;
+  bool separation_given = false, surface_distance_given = false;
   bool degree_given = false;
   Command_line line(argc, argv);
   std::string flag;
@@ -298,6 +302,11 @@ Options parse_options(int argc, char** argv)
       o.out_quads = line.text();
       o.parametrize = true;
     }
+    else if(flag == "--max-surface-distance")
+    {
+      o.max_surface_distance = line.number(0, 1e6, true);
+      surface_distance_given = true;
+    }
     else if(flag == "--planarize")
       o.planarity_threshold = line.optional_number(0, 1, 0.01);
     else
@@ -356,6 +365,8 @@ Options parse_options(int argc, char** argv)
     throw Failure("--quads and --edge-length both set the quad size: give one", 2);
   if(separation_given && !o.parametrize)
     throw Failure("--singularity-separation goes with --parametrize or --quad-mesh", 2);
+  if(surface_distance_given && o.planarity_threshold <= 0)
+    throw Failure("--max-surface-distance goes with --planarize", 2);
   if(o.planarity_threshold > 0 && o.out_quads.empty())
     throw Failure("--planarize goes with --quad-mesh", 2);
   if(!o.out_quads.empty())

@@ -407,9 +407,10 @@ Field design_field(const Options& o, Mesh& tm, const Bundle& bundle, const Const
                                               : PVF::design_angle_bounded_frame_field(pvf, result, np);
     if(code != PVF::Error_code::DID_NOT_CONVERGE)
       check(code, "angle bound");
-    report << "angle bound     " << o.angle_bound_degrees << " degrees (to within " << tolerance * 180 / CGAL_PI
-           << "): " << (result.converged ? "converged" : "NOT converged")
-           << " in " << result.iterations << " iterations; smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
+    report << "angle bound     " << o.angle_bound_degrees << " degrees: "
+           << (result.converged ? "reached" : "NOT reached") << " in " << result.iterations
+           << " iterations (to within " << tolerance * 180 / CGAL_PI << " degree, then " << result.projected_faces
+           << " free faces projected onto the bound); smallest angle " << result.minimum_free_angle * 180 / CGAL_PI
            << " degrees (free faces), " << result.minimum_angle * 180 / CGAL_PI << " degrees (all faces); "
            << result.factorizations << " factorizations\n";
     clock.lap("frame field");
@@ -565,6 +566,7 @@ struct Quad_stage
   PVF::Planarity_result before, after;
   bool planarized = false;
   PVF::Planarization_result planarization;
+  PVF::Error_code planarization_code = PVF::Error_code::SUCCESS;
   double time_extraction = 0, time_planarization = 0;
 };
 
@@ -583,10 +585,18 @@ void make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, cons
   if(o.planarity_threshold > 0)
   {
     const PVF::internal::Timer planarization_timer;
-    const PVF::Error_code code = PVF::planarize_quad_mesh(q.quads, tm, q.planarization,
-                                                          PVF::parameters::planarity_threshold(o.planarity_threshold));
-    // Not reaching the threshold within the iterations is reported, not fatal.
-    if(code != PVF::Error_code::DID_NOT_CONVERGE)
+    // The bound on the distance to the surface: a fraction of the mean quad edge.
+    double mean_edge = 0;
+    for(auto e : edges(q.quads))
+      mean_edge += CGAL::Polygon_mesh_processing::edge_length(e, q.quads) / double(num_edges(q.quads));
+    const PVF::Error_code code = PVF::planarize_quad_mesh(
+      q.quads, tm, q.planarization,
+      PVF::parameters::max_distance_to_surface(o.max_surface_distance * mean_edge,
+                                               PVF::parameters::planarity_threshold(o.planarity_threshold)));
+    // Not reaching the threshold within the iterations, or only by leaving the
+    // surface, is reported, not fatal: the quad mesh is then kept as extracted.
+    q.planarization_code = code;
+    if(code != PVF::Error_code::DID_NOT_CONVERGE && code != PVF::Error_code::TOO_FAR_FROM_SURFACE)
       check(code, "planarization");
     q.planarized = true;
     check(PVF::quad_planarity(q.quads, planarity, q.after), "planarity");

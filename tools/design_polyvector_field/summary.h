@@ -184,7 +184,12 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     if(q.planarized)
     {
       const PVF::Planarization_result& r = q.planarization;
-      if(r.converged)
+      if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE)
+        std::cout << "; the planarization reached " << 100 * r.max_planarity_after << "% only by moving a vertex "
+                  << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length
+                  << "% of the mean quad edge) from the surface, beyond the bound " << r.distance_bound << " ("
+                  << 100 * o.max_surface_distance << "%): the quad mesh is written as extracted";
+      else if(r.converged)
         std::cout << " -> after " << r.iterations << " iterations max " << 100 * q.after.max << "%, mean "
                   << 100 * q.after.mean << "% (threshold " << 100 * r.threshold << "%); largest distance to the surface "
                   << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";

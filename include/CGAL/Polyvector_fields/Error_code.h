@@ -50,7 +50,8 @@ enum class Error_code
   NON_QUAD_FACE,                 ///< a face of a polygon mesh is not a quadrilateral
   DID_NOT_CONVERGE,              ///< an iterative method stopped at its iteration limit before reaching its target
   MAP_CHECK_FAILED,              ///< a computed integer-grid map failed the check made before it is returned: a seam not exact under its transition, a singular vertex off the integer grid, or transitions that do not compose to the identity around a regular vertex
-  NO_INTEGER_CELL                ///< a connected component of the surface has no whole cell of the integer-grid map: the quad size is larger than that part of the surface
+  NO_INTEGER_CELL,               ///< a connected component of the surface has no whole cell of the integer-grid map: the quad size is larger than that part of the surface
+  FOLDED_QUAD                    ///< a quad extracted from an integer-grid map is folded against the surface: neither of its diagonals splits it into two triangles that face the side of the input faces under it
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -91,6 +92,7 @@ inline const char* get_error_message(Error_code code)
     case Error_code::DID_NOT_CONVERGE: return "the iteration limit was reached before the target";
     case Error_code::MAP_CHECK_FAILED: return "the computed integer-grid map failed its check (a seam not exact, a singular vertex off the integer grid, or transitions that do not close up around a regular vertex)";
     case Error_code::NO_INTEGER_CELL: return "the quad size is larger than the surface: a connected component has no whole integer cell, so no quad";
+    case Error_code::FOLDED_QUAD: return "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)";
   }
   return "unknown error";
 }

@@ -61,6 +61,7 @@ struct Quad_extraction_result
   std::size_t trimmed_polygons = 0;       ///< of which cells trimmed by the boundary (with `keep_trimmed_boundary`)
   std::size_t discarded_cells = 0;        ///< boundary cells dropped (whole-cell mode)
   std::size_t non_quad_cells = 0;         ///< closed cells with other than 4 corners (dropped; expected 0)
+  std::size_t folded_quads = 0;           ///< quads folded against the surface (`FOLDED_QUAD`; expected 0)
   std::size_t split_vertices = 0;         ///< vertices duplicated because their kept faces formed several fans
   std::size_t irregular_vertices = 0;     ///< interior output vertices of valence != 4
   std::size_t components = 0;             ///< connected components of the input mesh (through its edges)
@@ -167,7 +168,10 @@ struct Quad_extraction_result
 ///          close up: see `result.diagnostic`); `UNREPAIRABLE_FOLD_OVER`; `NO_INTEGER_CELL` if a connected
 ///          component of `tm` gets no face, the quad size of the map being larger than that part of the
 ///          surface (`result.diagnostic` names the first such component; never an empty or partial quad
-///          mesh). `quad_mesh` is written only on success; `tm` is never changed.
+///          mesh); `FOLDED_QUAD` if a quad is folded against the surface: neither of its diagonals splits it into two
+///          triangles that face the side of the input surface under it (the face nearest to its centroid, and the
+///          faces its sides were traced through), the count in `result.folded_quads`. `quad_mesh` is written only
+///          on success; `tm` is never changed.
 ///
 /// \sa `compute_integer_grid_map()`, `quad_planarity()`, `planarize_quad_mesh()`, `IO::write_quad_mesh_VTK()`
 template <typename TriangleMesh, typename UVMap, typename PolygonMesh,

@@ -16,6 +16,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Extractor.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_check.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Exact_rational.h>
@@ -117,10 +118,11 @@ void collect_cells(const Extractor& X, bool trimmed, Cells& C, Report& result)
   }
 }
 
-// Builds the quad mesh (cleared first) from the cells. `result` is a Quad_extraction_result.
+// Builds the quad mesh (cleared first) from the cells, `ends` being the traces of the
+// iso-line slots. `result` is a Quad_extraction_result.
 template <typename PolygonMesh, typename NamedParametersOut, typename Report>
-Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, PolygonMesh& quad_mesh,
-                           const NamedParametersOut& np_out, Report& result)
+Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, const std::vector<Trace_end>& ends,
+                           PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result)
 {
   // sector i at point P: between slots[i] (outgoing of a face corner) and slots[i+1]
   std::vector<std::vector<std::size_t> > sector_face(X.points.size());
@@ -317,6 +319,52 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       ++result.quads;
     else
       ++result.trimmed_polygons;
+  }
+  // Every quad is checked against the input faces its sides were traced through.
+  {
+    const Fold_check check(M);
+    std::vector<std::size_t> under;
+    std::size_t first_folded = npos;
+    for(std::size_t f = 0; f < C.cells.size(); ++f)
+    {
+      if(polygons[f].size() != 4 || C.has_boundary_piece[f])
+        continue;
+      under.clear();
+      std::array<P3, 4> q;
+      for(std::size_t k = 0; k < 4; ++k)
+      {
+        const std::size_t s = C.cells[f][k];
+        const Out_point& x = positions[polygons[f][k]];
+        q[k] = { CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()) };
+        if(s < ends.size())
+          under.insert(under.end(), ends[s].faces.begin(), ends[s].faces.end());
+        if(X.slots[s].face < M.F)
+          under.push_back(X.slots[s].face);
+      }
+      std::sort(under.begin(), under.end());
+      under.erase(std::unique(under.begin(), under.end()), under.end());
+      if(check.folded(q, under))
+      {
+        ++result.folded_quads;
+        if(first_folded == npos)
+          first_folded = f;
+      }
+    }
+    if(result.folded_quads != 0)
+    {
+      P3 centre{ 0, 0, 0 };
+      for(std::size_t v : polygons[first_folded])
+      {
+        centre[0] += 0.25 * CGAL::to_double(positions[v].x());
+        centre[1] += 0.25 * CGAL::to_double(positions[v].y());
+        centre[2] += 0.25 * CGAL::to_double(positions[v].z());
+      }
+      result.diagnostic = std::to_string(result.folded_quads) + " of the " + std::to_string(polygons.size()) +
+                          " quads fold against the surface (neither diagonal gives two triangles on the side of the input "
+                          "faces under the quad); the first one near (" + std::to_string(centre[0]) + ", " +
+                          std::to_string(centre[1]) + ", " + std::to_string(centre[2]) + ")";
+      return Error_code::FOLDED_QUAD;
+    }
   }
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
   {

@@ -1,0 +1,114 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+//
+// The check of the extracted quads against the surface they came from: a quad
+// is folded when neither of its diagonals splits it into two triangles that
+// face the side of the input surface under it.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_FOLD_CHECK_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_FOLD_CHECK_H
+
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
+#include <CGAL/Polyvector_fields/internal/types.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+namespace qex {
+
+typedef std::array<double, 3> P3;
+
+inline P3 sub3(const P3& a, const P3& b) { return { a[0] - b[0], a[1] - b[1], a[2] - b[2] }; }
+inline P3 cross3(const P3& a, const P3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+inline double dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// The (unnormalised) normal of face f of the chart mesh, on the side its charts are counterclockwise.
+inline P3 face_normal(const Chart_mesh& M, std::size_t f)
+{
+  const P3 &a = M.point[M.vertex[3 * f]], &b = M.point[M.vertex[3 * f + 1]], &c = M.point[M.vertex[3 * f + 2]];
+  return cross3(sub3(b, a), sub3(c, a));
+}
+
+// Is the quad q folded against the surface normal n: for each of its two diagonals,
+// one of the two triangles faces away from n (or is orthogonal to it). A quad with
+// one good diagonal (a dart, a corner near 180 degrees) is not folded.
+inline bool is_folded_quad(const std::array<P3, 4>& q, const P3& n)
+{
+  const P3 split[2][2] = { { cross3(sub3(q[1], q[0]), sub3(q[2], q[0])), cross3(sub3(q[2], q[0]), sub3(q[3], q[0])) },
+                           { cross3(sub3(q[2], q[1]), sub3(q[3], q[1])), cross3(sub3(q[3], q[1]), sub3(q[0], q[1])) } };
+  for(int diagonal = 0; diagonal < 2; ++diagonal)
+    if(dot3(split[diagonal][0], n) > 0 && dot3(split[diagonal][1], n) > 0)
+      return false;
+  return true;
+}
+
+// The input surface near the quads: the faces of the chart mesh in an AABB tree.
+class Fold_check
+{
+  typedef Epick::Point_3 Point;
+  typedef Epick::Triangle_3 Triangle;
+  typedef std::vector<Triangle>::const_iterator Iterator;
+  typedef CGAL::AABB_triangle_primitive<Epick, Iterator> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive> > Tree;
+
+public:
+  explicit Fold_check(const Chart_mesh& M) : M_(M)
+  {
+    triangles_.reserve(M.F);
+    for(std::size_t f = 0; f < M.F; ++f)
+    {
+      const P3 &a = M.point[M.vertex[3 * f]], &b = M.point[M.vertex[3 * f + 1]], &c = M.point[M.vertex[3 * f + 2]];
+      triangles_.emplace_back(Point(a[0], a[1], a[2]), Point(b[0], b[1], b[2]), Point(c[0], c[1], c[2]));
+    }
+    tree_.insert(triangles_.cbegin(), triangles_.cend());
+    tree_.build();
+  }
+
+  // The quad q is folded against the faces it came from: against the normal of the
+  // input face nearest to its centroid, or against the sum of the normals of the faces
+  // `under` it (the faces its sides were traced through).
+  bool folded(const std::array<P3, 4>& q, const std::vector<std::size_t>& under) const
+  {
+    P3 sum{ 0, 0, 0 };
+    for(std::size_t f : under)
+    {
+      const P3 nf = face_normal(M_, f);
+      sum = { sum[0] + nf[0], sum[1] + nf[1], sum[2] + nf[2] };
+    }
+    if(!under.empty() && is_folded_quad(q, sum))
+      return true;
+    const Point centroid((q[0][0] + q[1][0] + q[2][0] + q[3][0]) / 4, (q[0][1] + q[1][1] + q[2][1] + q[3][1]) / 4,
+                         (q[0][2] + q[1][2] + q[2][2] + q[3][2]) / 4);
+    const auto hit = tree_.closest_point_and_primitive(centroid);
+    const std::size_t f = std::size_t(hit.second - triangles_.cbegin());
+    return is_folded_quad(q, face_normal(M_, f));
+  }
+
+private:
+  const Chart_mesh& M_;
+  std::vector<Triangle> triangles_;
+  Tree tree_;
+};
+
+} // namespace qex
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_FOLD_CHECK_H

@@ -98,8 +98,9 @@ struct Quad_extraction_result
 /// iso-line/edge crossings and point-in-triangle tests are decided by exact
 /// comparisons and orientation predicates on the uv values; a point on an edge or
 /// at a vertex is one point for all the triangles around it (found through the mesh
-/// connectivity, never by distance). Positions: barycentric coordinates computed
-/// in exact rationals, rounded once.
+/// connectivity, never by distance). Positions: the barycentric combination of the
+/// triangle's corners, computed in exact rationals and rounded once per coordinate
+/// (a point of a flat mesh whose map is exact gets its exact coordinates).
 ///
 /// <b>Singular vertices.</b> A vertex whose uv angles sum to `(4 - k) pi/2` has
 /// `4 - k` iso-line directions, hence valence `4 - k` in the output.

@@ -187,11 +187,17 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
                                                              Default_out_vpm>::type Out_vpm;
   typedef typename boost::property_traits<Out_vpm>::value_type Out_point;
   typedef CGAL::Exact_rational Q;
-  auto lerp3 = [&](const std::array<double, 3>* P, const double* w, std::size_t n) {
-    double x[3] = { 0, 0, 0 };
-    for(std::size_t i = 0; i < n; ++i)
-      for(int a = 0; a < 3; ++a)
-        x[a] += w[i] * P[i][a];
+  // sum of w[i] P[i], exact, rounded once per coordinate: a point that the map puts at a
+  // mesh vertex, or at a point with exact coordinates, gets exactly these coordinates
+  auto lerp3 = [&](const std::array<double, 3>* P, const Q* w, std::size_t n) {
+    double x[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      Q sum(0);
+      for(std::size_t i = 0; i < n; ++i)
+        sum += w[i] * Q(P[i][a]);
+      x[a] = CGAL::to_double(sum);
+    }
     return Out_point(x[0], x[1], x[2]);
   };
   std::vector<Out_point> positions;
@@ -223,9 +229,8 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
         std::swap(a, b);
         lam = Q(1) - lam;
       }
-      const double l = CGAL::to_double(lam);
       const std::array<double, 3> PP[2] = { M.point[M.vertex[a]], M.point[M.vertex[b]] };
-      const double w[2] = { 1 - l, l };
+      const Q w[2] = { Q(1) - lam, lam };
       positions.push_back(lerp3(PP, w, 2));
     }
     else
@@ -240,11 +245,11 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
         return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
       };
       const Q area = det(U[0][0], U[0][1], U[1][0], U[1][1], U[2][0], U[2][1]);
-      double w[3];
+      Q w[3];
       for(std::size_t k = 0; k < 3; ++k)
       {
         const std::size_t k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        w[k] = CGAL::to_double(det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area);
+        w[k] = det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area;
       }
       const std::array<double, 3> PP[3] = { M.point[M.vertex[3 * f]], M.point[M.vertex[3 * f + 1]], M.point[M.vertex[3 * f + 2]] };
       positions.push_back(lerp3(PP, w, 3));

@@ -1638,13 +1638,18 @@ TEST(QuadFolds, FoldedQuadIsAnError)
   }
   Quad_uv_map uv;
   const Mesh tm = quad_bent_strip(3 * pi / 2, uv);
-  Mesh qm = grid(1, 3);
-  PVF::Quad_extraction_result r;
-  EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r), PVF::Error_code::FOLDED_QUAD);
-  EXPECT_EQ(r.flipped_faces, 0u);
-  EXPECT_EQ(r.folded_quads, 2u);
-  EXPECT_NE(r.diagnostic.find("2 of the 2 quads fold against the surface"), std::string::npos) << r.diagnostic;
-  EXPECT_EQ(num_faces(qm), 6u);  // untouched
+  // without the repair, and with it: no corner position on the surface unfolds them
+  for(std::size_t rings : { std::size_t(0), std::size_t(6) })
+  {
+    Mesh qm = grid(1, 3);
+    PVF::Quad_extraction_result r;
+    EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r, PVF::parameters::fold_over_repair_rings(rings)), PVF::Error_code::FOLDED_QUAD);
+    EXPECT_EQ(r.flipped_faces, 0u);
+    EXPECT_EQ(r.folded_quads, 2u);
+    EXPECT_EQ(r.unfolded_quads, 0u);
+    EXPECT_NE(r.diagnostic.find("2 of the 2 quads fold against the surface"), std::string::npos) << r.diagnostic;
+    EXPECT_EQ(num_faces(qm), 6u);  // untouched
+  }
   EXPECT_STREQ(PVF::get_error_message(PVF::Error_code::FOLDED_QUAD),
                "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)");
 }

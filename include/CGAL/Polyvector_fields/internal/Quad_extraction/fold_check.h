@@ -80,8 +80,9 @@ public:
     tree_.build();
   }
 
-  // The quad q is folded against the faces it came from: against the normal of the
-  // input face nearest to its centroid, or against the sum of the normals of the faces
+  // The quad q is folded against the faces it came from: against the normal of an
+  // input face nearest to its centroid (any of them, on a tie: the nearest point on an
+  // edge or at a vertex), or against the sum of the normals of the faces
   // `under` it (the faces its sides were traced through).
   bool folded(const std::array<P3, 4>& q, const std::vector<std::size_t>& under) const
   {
@@ -97,7 +98,19 @@ public:
                          (q[0][2] + q[1][2] + q[2][2] + q[3][2]) / 4);
     const auto hit = tree_.closest_point_and_primitive(centroid);
     const std::size_t f = std::size_t(hit.second - triangles_.cbegin());
-    return is_folded_quad(q, face_normal(M_, f));
+    if(is_folded_quad(q, face_normal(M_, f)))
+      return true;
+    // the faces as near as f (the nearest point on an edge or at a vertex, as on a ridge)
+    const double d2 = CGAL::squared_distance(centroid, hit.first);
+    for(std::size_t k = 0; k < 3; ++k)
+      for(std::size_t c : M_.fan[M_.vertex[3 * f + k]])
+      {
+        const std::size_t g = Chart_mesh::face(c);
+        if(g != f && CGAL::squared_distance(centroid, triangles_[g]) <= d2 * (1 + 1e-9) &&
+           is_folded_quad(q, face_normal(M_, g)))
+          return true;
+      }
+    return false;
   }
 
 private:
@@ -105,6 +118,111 @@ private:
   std::vector<Triangle> triangles_;
   Tree tree_;
 };
+
+// The quads of the output and the faces under each of them, with the repair of the
+// folded ones: a corner of a folded quad is moved to a point of the surface under the
+// quads around it (a vertex of one of their faces, or the midpoint of an edge), the
+// nearest one that leaves all these quads unfolded. A fold comes from a surface that
+// bends by more than a right angle under one quad (a crease or a thin ridge of the
+// input, at a scale finer than the quads): the corner moves onto the ridge.
+struct Fold_report
+{
+  std::size_t folded = 0;          // quads folded before the repair
+  std::size_t unfolded = 0;        // of which repaired
+  std::size_t moved_vertices = 0;  // corners moved by the repair
+  std::size_t first_folded = npos; // a quad still folded after the repair
+};
+
+// quads[f]: the output vertices of quad f (empty: a face that is not checked); under[f]:
+// the input faces under it; pos: the output vertex positions, moved by the repair.
+inline Fold_report unfold_quads(const Chart_mesh& M, const std::vector<std::vector<std::size_t> >& quads,
+                                const std::vector<std::vector<std::size_t> >& under, std::vector<P3>& pos, bool repair)
+{
+  Fold_report report;
+  const Fold_check check(M);
+  auto folded = [&](std::size_t f) {
+    const std::array<P3, 4> q{ { pos[quads[f][0]], pos[quads[f][1]], pos[quads[f][2]], pos[quads[f][3]] } };
+    return check.folded(q, under[f]);
+  };
+  std::vector<char> is_folded(quads.size(), 0);
+  std::vector<std::size_t> list;
+  for(std::size_t f = 0; f < quads.size(); ++f)
+    if(quads[f].size() == 4 && folded(f))
+    {
+      is_folded[f] = 1;
+      list.push_back(f);
+    }
+  report.folded = list.size();
+  if(repair && !list.empty())
+  {
+    std::vector<std::vector<std::size_t> > vertex_quads(pos.size());
+    for(std::size_t f = 0; f < quads.size(); ++f)
+      for(std::size_t v : quads[f])
+        vertex_quads[v].push_back(f);
+    for(int pass = 0; pass < 4; ++pass)
+    {
+      bool progress = false;
+      for(std::size_t f : list)
+      {
+        if(!is_folded[f])
+          continue;
+        for(std::size_t v : quads[f])
+        {
+          // candidates: the vertices and edge midpoints of the faces under the quads at v
+          std::vector<P3> candidates;
+          for(std::size_t g : vertex_quads[v])
+            for(std::size_t t : under[g])
+              for(std::size_t k = 0; k < 3; ++k)
+              {
+                const P3 &a = M.point[M.vertex[3 * t + k]], &b = M.point[M.vertex[3 * t + (k + 1) % 3]];
+                candidates.push_back(a);
+                candidates.push_back({ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) });
+              }
+          std::sort(candidates.begin(), candidates.end());
+          candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+          const P3 old = pos[v];
+          std::sort(candidates.begin(), candidates.end(), [&](const P3& a, const P3& b) {
+            return dot3(sub3(a, old), sub3(a, old)) < dot3(sub3(b, old), sub3(b, old));
+          });
+          bool moved = false;
+          for(const P3& c : candidates)
+          {
+            pos[v] = c;
+            bool good = true;
+            for(std::size_t g : vertex_quads[v])
+              good = good && (quads[g].size() != 4 || !folded(g));
+            if(good)
+            {
+              moved = true;
+              break;
+            }
+          }
+          if(!moved)
+          {
+            pos[v] = old;
+            continue;
+          }
+          ++report.moved_vertices;
+          for(std::size_t g : vertex_quads[v])
+            is_folded[g] = 0;
+          progress = true;
+          break;
+        }
+      }
+      if(!progress)
+        break;
+    }
+  }
+  for(std::size_t f : list)
+    if(is_folded[f])
+    {
+      if(report.first_folded == npos)
+        report.first_folded = f;
+    }
+    else
+      ++report.unfolded;
+  return report;
+}
 
 } // namespace qex
 } // namespace internal

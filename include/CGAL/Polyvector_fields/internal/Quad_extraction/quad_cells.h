@@ -25,6 +25,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -119,10 +120,11 @@ void collect_cells(const Extractor& X, bool trimmed, Cells& C, Report& result)
 }
 
 // Builds the quad mesh (cleared first) from the cells, `ends` being the traces of the
-// iso-line slots. `result` is a Quad_extraction_result.
+// iso-line slots; folded quads are repaired if `repair_folds`. `result` is a
+// Quad_extraction_result.
 template <typename PolygonMesh, typename NamedParametersOut, typename Report>
 Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, const std::vector<Trace_end>& ends,
-                           PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result)
+                           bool repair_folds, PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result)
 {
   // sector i at point P: between slots[i] (outgoing of a face corner) and slots[i+1]
   std::vector<std::vector<std::size_t> > sector_face(X.points.size());
@@ -325,51 +327,50 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
     else
       ++result.trimmed_polygons;
   }
-  // Every quad is checked against the input faces its sides were traced through.
+  // Every quad is checked against the input faces under it (the faces its sides were
+  // traced through, and the face nearest to its centroid); the folded ones are repaired
+  // by moving their corners on the surface, or the extraction fails.
   {
-    const Fold_check check(M);
-    std::vector<std::size_t> under;
-    std::size_t first_folded = npos;
+    std::vector<std::vector<std::size_t> > quads(C.cells.size()), under(C.cells.size());
     for(std::size_t f = 0; f < C.cells.size(); ++f)
     {
       if(polygons[f].size() != 4 || C.has_boundary_piece[f])
         continue;
-      under.clear();
-      std::array<P3, 4> q;
-      for(std::size_t k = 0; k < 4; ++k)
+      quads[f] = polygons[f];
+      for(std::size_t s : C.cells[f])
       {
-        const std::size_t s = C.cells[f][k];
-        const Out_point& x = positions[polygons[f][k]];
-        q[k] = { CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()) };
         if(s < ends.size())
-          under.insert(under.end(), ends[s].faces.begin(), ends[s].faces.end());
+          under[f].insert(under[f].end(), ends[s].faces.begin(), ends[s].faces.end());
         if(X.slots[s].face < M.F)
-          under.push_back(X.slots[s].face);
+          under[f].push_back(X.slots[s].face);
       }
-      std::sort(under.begin(), under.end());
-      under.erase(std::unique(under.begin(), under.end()), under.end());
-      if(check.folded(q, under))
-      {
-        ++result.folded_quads;
-        if(first_folded == npos)
-          first_folded = f;
-      }
+      std::sort(under[f].begin(), under[f].end());
+      under[f].erase(std::unique(under[f].begin(), under[f].end()), under[f].end());
     }
+    std::vector<P3> pos(positions.size());
+    for(std::size_t v = 0; v < positions.size(); ++v)
+      pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+    const Fold_report fold = unfold_quads(M, quads, under, pos, repair_folds);
+    result.folded_quads = fold.folded - fold.unfolded;
+    result.unfolded_quads = fold.unfolded;
+    result.moved_quad_vertices = fold.moved_vertices;
     if(result.folded_quads != 0)
     {
       P3 centre{ 0, 0, 0 };
-      for(std::size_t v : polygons[first_folded])
-      {
-        centre[0] += 0.25 * CGAL::to_double(positions[v].x());
-        centre[1] += 0.25 * CGAL::to_double(positions[v].y());
-        centre[2] += 0.25 * CGAL::to_double(positions[v].z());
-      }
+      for(std::size_t v : polygons[fold.first_folded])
+        for(int a = 0; a < 3; ++a)
+          centre[a] += 0.25 * pos[v][a];
       result.diagnostic = std::to_string(result.folded_quads) + " of the " + std::to_string(polygons.size()) +
                           " quads fold against the surface (neither diagonal gives two triangles on the side of the input "
-                          "faces under the quad); the first one near (" + std::to_string(centre[0]) + ", " +
-                          std::to_string(centre[1]) + ", " + std::to_string(centre[2]) + ")";
+                          "faces under the quad), " + std::to_string(fold.unfolded) + " others were repaired; the first one near (" +
+                          std::to_string(centre[0]) + ", " + std::to_string(centre[1]) + ", " + std::to_string(centre[2]) +
+                          "): the surface bends by more than a right angle under one quad there";
       return Error_code::FOLDED_QUAD;
     }
+    for(std::size_t v = 0; v < positions.size(); ++v)
+      if(pos[v][0] != CGAL::to_double(positions[v].x()) || pos[v][1] != CGAL::to_double(positions[v].y()) ||
+         pos[v][2] != CGAL::to_double(positions[v].z()))
+        positions[v] = Out_point(pos[v][0], pos[v][1], pos[v][2]);
   }
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
   {

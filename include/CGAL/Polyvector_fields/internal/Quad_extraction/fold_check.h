@@ -166,7 +166,11 @@ inline Fold_report unfold_quads(const Chart_mesh& M, const std::vector<std::vect
       {
         if(!is_folded[f])
           continue;
-        for(std::size_t v : quads[f])
+        // the regular corners first (four quads around them): a singular point stays where the map put it if it can
+        std::vector<std::size_t> corners = quads[f];
+        std::stable_sort(corners.begin(), corners.end(),
+                         [&](std::size_t a, std::size_t b) { return (vertex_quads[a].size() != 4) < (vertex_quads[b].size() != 4); });
+        for(std::size_t v : corners)
         {
           // candidates: the vertices and edge midpoints of the faces under the quads at v
           std::vector<P3> candidates;

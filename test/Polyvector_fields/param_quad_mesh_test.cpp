@@ -6,7 +6,8 @@
 // It is not part of CGAL.
 
 // Tests of extract_quad_mesh(), quad_planarity(), planarize_quad_mesh() and
-// IO::write_quad_mesh_VTK() (issue 13). Every property is checked by code
+// IO::write_quad_mesh_VTK() (issue 13), and of maps aligned with the boundary and
+// the mesh edges, and of folded quads (issue 21). Every property is checked by code
 // written here (own planarity formula, own AABB-tree distances, own lattice
 // and valence counts), from the outputs only. Everything but the tests is in
 // an anonymous namespace with Quad/quad names and the suites are named Quad*,
@@ -44,6 +45,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -1099,4 +1101,555 @@ TEST(QuadOutput, VtkStreamAndFile)
   EXPECT_LE(non_quads, r.trimmed_polygons);
   EXPECT_EQ(minus_one, non_quads);
   std::filesystem::remove_all(dir);
+}
+
+// ---------------------------------------------------------------------------
+// Maps aligned with the boundary and with mesh edges (exact integer iso-lines)
+// ---------------------------------------------------------------------------
+namespace {
+
+typedef std::array<long, 2> Quad_lattice_point;
+
+// A flat mesh of the triangles (indices into `points`, counterclockwise) with the identity
+// map uv = (x, y): exact, since the points are integers or halves.
+Mesh quad_flat_mesh(const std::vector<std::array<double, 2> >& points, const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  Soup<Point> soup;
+  for(const auto& p : points)
+    soup.points.emplace_back(p[0], p[1], 0);
+  for(const auto& t : triangles)
+    soup.faces.push_back({ t[0], t[1], t[2] });
+  return make_mesh<Mesh>(soup);
+}
+
+void quad_identity_map(const Mesh& tm, Quad_uv_map uv)
+{
+  for(Halfedge h : halfedges(tm))
+    if(!CGAL::is_border(h, tm))
+      uv[h] = { tm.point(target(h, tm)).x(), tm.point(target(h, tm)).y() };
+}
+
+// Polygon (counterclockwise, integer corners) -> triangles by ear clipping with exact
+// integer orientation tests: coarse triangles whose edges run along grid lines and through
+// lattice points.
+std::vector<std::array<std::size_t, 3> > quad_ear_clipping(const std::vector<std::array<double, 2> >& poly)
+{
+  auto orient = [](const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+    const double d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    return (d > 0) - (d < 0);
+  };
+  std::vector<std::size_t> idx(poly.size());
+  for(std::size_t i = 0; i < idx.size(); ++i)
+    idx[i] = i;
+  std::vector<std::array<std::size_t, 3> > out;
+  while(idx.size() > 3)
+  {
+    bool cut = false;
+    for(std::size_t i = 0; i < idx.size() && !cut; ++i)
+    {
+      const std::size_t a = idx[(i + idx.size() - 1) % idx.size()], b = idx[i], c = idx[(i + 1) % idx.size()];
+      if(orient(poly[a], poly[b], poly[c]) <= 0)
+        continue;
+      bool empty = true;
+      for(std::size_t j : idx)
+        if(j != a && j != b && j != c && orient(poly[a], poly[b], poly[j]) >= 0 && orient(poly[b], poly[c], poly[j]) >= 0 &&
+           orient(poly[c], poly[a], poly[j]) >= 0)
+          empty = false;
+      if(!empty)
+        continue;
+      out.push_back({ a, b, c });
+      idx.erase(idx.begin() + std::ptrdiff_t(i));
+      cut = true;
+    }
+    if(!cut)
+      return {};
+  }
+  out.push_back({ idx[0], idx[1], idx[2] });
+  return out;
+}
+
+// The expected quad mesh of a flat region made of whole unit cells with the identity map:
+// one unit square per cell, its corners at the cell corners.
+struct Quad_lattice_checks
+{
+  bool valid = false, all_unit_squares = true;
+  std::size_t faces = 0, vertices = 0, border_edges = 0, border_edges_on_boundary = 0;
+  std::set<Quad_lattice_point> cells;
+};
+
+// `on_boundary(a, b)`: the segment between two lattice points lies on the region's boundary
+template <typename OnBoundary>
+Quad_lattice_checks quad_lattice_checks(const Mesh& qm, OnBoundary on_boundary)
+{
+  Quad_lattice_checks c;
+  c.valid = CGAL::is_valid_polygon_mesh(qm);
+  c.faces = num_faces(qm);
+  c.vertices = num_vertices(qm);
+  auto lattice = [&](Vertex v) {
+    const Point& p = qm.point(v);
+    return Quad_lattice_point{ long(std::lround(p.x())), long(std::lround(p.y())) };
+  };
+  for(Vertex v : vertices(qm))
+  {
+    const Point& p = qm.point(v);
+    c.all_unit_squares = c.all_unit_squares && p.x() == std::round(p.x()) && p.y() == std::round(p.y()) && p.z() == 0;
+  }
+  for(Face f : faces(qm))
+  {
+    std::vector<Quad_lattice_point> q;
+    for(Halfedge h : halfedges_around_face(halfedge(f, qm), qm))
+      q.push_back(lattice(target(h, qm)));
+    bool unit = q.size() == 4;
+    long lo[2] = { 1L << 40, 1L << 40 };
+    for(std::size_t k = 0; unit && k < 4; ++k)
+    {
+      const Quad_lattice_point &a = q[k], &b = q[(k + 1) % 4];
+      unit = std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) == 1;
+      // counterclockwise: the turn at every corner is to the left
+      const Quad_lattice_point& n = q[(k + 2) % 4];
+      unit = unit && (b[0] - a[0]) * (n[1] - b[1]) - (b[1] - a[1]) * (n[0] - b[0]) == 1;
+      lo[0] = (std::min)(lo[0], a[0]);
+      lo[1] = (std::min)(lo[1], a[1]);
+    }
+    c.all_unit_squares = c.all_unit_squares && unit;
+    c.cells.insert({ lo[0], lo[1] });
+  }
+  for(Halfedge h : halfedges(qm))
+    if(CGAL::is_border(h, qm))
+    {
+      ++c.border_edges;
+      c.border_edges_on_boundary += on_boundary(lattice(source(h, qm)), lattice(target(h, qm)));
+    }
+  return c;
+}
+
+// A union of unit cells: its boundary segments, its lattice points.
+struct Quad_cell_region
+{
+  std::set<Quad_lattice_point> cells;
+  bool has(long x, long y) const { return cells.count({ x, y }) != 0; }
+  // the unit segment a-b is on the boundary: exactly one of its two cells is in the region
+  bool on_boundary(const Quad_lattice_point& a, const Quad_lattice_point& b) const
+  {
+    if(a[1] == b[1] && std::abs(a[0] - b[0]) == 1)
+    {
+      const long x = (std::min)(a[0], b[0]);
+      return has(x, a[1]) != has(x, a[1] - 1);
+    }
+    if(a[0] == b[0] && std::abs(a[1] - b[1]) == 1)
+    {
+      const long y = (std::min)(a[1], b[1]);
+      return has(a[0], y) != has(a[0] - 1, y);
+    }
+    return false;
+  }
+  std::size_t lattice_points() const
+  {
+    std::set<Quad_lattice_point> p;
+    for(const auto& c : cells)
+      for(long dx = 0; dx < 2; ++dx)
+        for(long dy = 0; dy < 2; ++dy)
+          p.insert({ c[0] + dx, c[1] + dy });
+    return p.size();
+  }
+  std::size_t boundary_segments() const
+  {
+    std::size_t n = 0;
+    for(const auto& c : cells)
+      n += !has(c[0] - 1, c[1]) + !has(c[0] + 1, c[1]) + !has(c[0], c[1] - 1) + !has(c[0], c[1] + 1);
+    return n;
+  }
+};
+
+// The region's boundary as one counterclockwise polygon through its corners only (collinear
+// lattice points dropped); empty if the boundary is not one simple closed curve.
+std::vector<std::array<double, 2> > quad_region_polygon(const Quad_cell_region& R)
+{
+  // directed unit boundary segments, the region on their left
+  std::map<Quad_lattice_point, std::vector<Quad_lattice_point> > next;
+  std::size_t count = 0;
+  for(const auto& c : R.cells)
+  {
+    const long x = c[0], y = c[1];
+    if(!R.has(x, y - 1)) next[{ x, y }].push_back({ x + 1, y }), ++count;
+    if(!R.has(x + 1, y)) next[{ x + 1, y }].push_back({ x + 1, y + 1 }), ++count;
+    if(!R.has(x, y + 1)) next[{ x + 1, y + 1 }].push_back({ x, y + 1 }), ++count;
+    if(!R.has(x - 1, y)) next[{ x, y + 1 }].push_back({ x, y }), ++count;
+  }
+  for(const auto& n : next)
+    if(n.second.size() != 1)
+      return {};  // a pinched boundary point
+  std::vector<Quad_lattice_point> loop{ next.begin()->first };
+  while(true)
+  {
+    const Quad_lattice_point n = next[loop.back()][0];
+    if(n == loop.front())
+      break;
+    loop.push_back(n);
+  }
+  if(loop.size() != count)
+    return {};  // several boundary curves: a hole
+  std::vector<std::array<double, 2> > poly;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+  {
+    const Quad_lattice_point &a = loop[(i + loop.size() - 1) % loop.size()], &b = loop[i], &c = loop[(i + 1) % loop.size()];
+    if((b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]) != 0)
+      poly.push_back({ double(b[0]), double(b[1]) });
+  }
+  return poly;
+}
+
+void quad_expect_cells_of_region(const Mesh& tm, const Quad_cell_region& R, const std::string& what)
+{
+  Mesh m = tm;
+  auto uv = m.add_property_map<Halfedge, UV>("h:uv").first;
+  quad_identity_map(m, uv);
+  Mesh qm;
+  PVF::Quad_extraction_result r;
+  ASSERT_EQ(PVF::extract_quad_mesh(m, uv, qm, r), PVF::Error_code::SUCCESS) << what << ": " << r.diagnostic;
+  const Quad_lattice_checks c = quad_lattice_checks(qm, [&](const Quad_lattice_point& a, const Quad_lattice_point& b) { return R.on_boundary(a, b); });
+  EXPECT_TRUE(c.valid) << what;
+  EXPECT_TRUE(c.all_unit_squares) << what;
+  EXPECT_EQ(c.faces, R.cells.size()) << what;
+  EXPECT_EQ(c.cells, R.cells) << what;
+  EXPECT_EQ(c.vertices, R.lattice_points()) << what;
+  EXPECT_EQ(c.border_edges, R.boundary_segments()) << what;
+  EXPECT_EQ(c.border_edges_on_boundary, c.border_edges) << what;
+  EXPECT_EQ(r.folded_quads, 0u) << what;
+  EXPECT_EQ(r.inconsistencies, 0u) << what;
+}
+
+Quad_cell_region quad_rectangle(long w, long h)
+{
+  Quad_cell_region R;
+  for(long x = 0; x < w; ++x)
+    for(long y = 0; y < h; ++y)
+      R.cells.insert({ x, y });
+  return R;
+}
+
+} // namespace
+
+// The square [0,3] x [0,2] in a few triangles, uv = (x, y): its boundary on integer
+// lines, grid lines along mesh edges and through mesh vertices, lattice points at
+// vertices and inside edges. Exactly its 6 cells, bounded by quad edges.
+TEST(QuadAligned, RectangleInFewTriangles)
+{
+  const Quad_cell_region R = quad_rectangle(3, 2);
+  typedef std::vector<std::array<double, 2> > Points;
+  typedef std::vector<std::array<std::size_t, 3> > Triangles;
+  // two triangles, either diagonal
+  quad_expect_cells_of_region(quad_flat_mesh(Points{ { 0, 0 }, { 3, 0 }, { 3, 2 }, { 0, 2 } }, Triangles{ { 0, 1, 2 }, { 0, 2, 3 } }), R, "two triangles");
+  quad_expect_cells_of_region(quad_flat_mesh(Points{ { 0, 0 }, { 3, 0 }, { 3, 2 }, { 0, 2 } }, Triangles{ { 0, 1, 3 }, { 1, 2, 3 } }), R, "other diagonal");
+  // a fan around a centre off the grid, and around a lattice point
+  for(const std::array<double, 2> centre : { std::array<double, 2>{ 1.5, 1 }, std::array<double, 2>{ 1, 1 }, std::array<double, 2>{ 2, 1 },
+                                             std::array<double, 2>{ 0.5, 0.5 } })
+    quad_expect_cells_of_region(quad_flat_mesh(Points{ { 0, 0 }, { 3, 0 }, { 3, 2 }, { 0, 2 }, centre },
+                                               Triangles{ { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 } }),
+                                R, "fan around (" + std::to_string(centre[0]) + ", " + std::to_string(centre[1]) + ")");
+  // boundary vertices inside the sides, at lattice points and between them
+  quad_expect_cells_of_region(quad_flat_mesh(Points{ { 0, 0 }, { 1, 0 }, { 3, 0 }, { 3, 2 }, { 1.5, 2 }, { 0, 2 } },
+                                             Triangles{ { 0, 1, 5 }, { 1, 4, 5 }, { 1, 2, 4 }, { 2, 3, 4 } }),
+                              R, "vertices inside the sides");
+  // a mesh edge along the whole grid line y = 1
+  quad_expect_cells_of_region(quad_flat_mesh(Points{ { 0, 0 }, { 3, 0 }, { 3, 1 }, { 3, 2 }, { 0, 2 }, { 0, 1 } },
+                                             Triangles{ { 0, 1, 2 }, { 0, 2, 5 }, { 5, 2, 3 }, { 5, 3, 4 } }),
+                              R, "an edge along y = 1");
+}
+
+// L-shaped and non-convex polygons with integer corners, triangulated coarsely (ear
+// clipping): one unit quad per cell, the boundary made of quad edges.
+TEST(QuadAligned, NonConvexPolygonsCoarselyTriangulated)
+{
+  auto region = [](const std::vector<Quad_lattice_point>& cells) {
+    Quad_cell_region R;
+    R.cells.insert(cells.begin(), cells.end());
+    return R;
+  };
+  const std::vector<Quad_cell_region> shapes{
+    region({ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 0, 1 }, { 0, 2 } }),                                  // L
+    region({ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 }, { 0, 1 }, { 3, 1 }, { 0, 2 }, { 3, 2 } }),    // U
+    region({ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 2, 1 }, { 2, 2 }, { 3, 2 } }),                       // staircase
+    region({ { 1, 0 }, { 0, 1 }, { 1, 1 }, { 2, 1 }, { 1, 2 } }),                                  // plus
+  };
+  for(std::size_t i = 0; i < shapes.size(); ++i)
+  {
+    const auto poly = quad_region_polygon(shapes[i]);
+    ASSERT_FALSE(poly.empty());
+    const auto triangles = quad_ear_clipping(poly);
+    ASSERT_EQ(triangles.size(), poly.size() - 2);
+    quad_expect_cells_of_region(quad_flat_mesh(poly, triangles), shapes[i], "shape " + std::to_string(i));
+  }
+  // random simply connected unions of cells, seeded
+  std::mt19937 rng(7);
+  std::size_t tested = 0;
+  for(int trial = 0; trial < 400 && tested < 60; ++trial)
+  {
+    Quad_cell_region R;
+    R.cells.insert({ 0, 0 });
+    const int n = 3 + int(rng() % 14);
+    while(int(R.cells.size()) < n)
+    {
+      auto it = R.cells.begin();
+      std::advance(it, std::ptrdiff_t(rng() % R.cells.size()));
+      const int d = int(rng() % 4);
+      const long dx[4] = { 1, 0, -1, 0 }, dy[4] = { 0, 1, 0, -1 };
+      R.cells.insert({ (*it)[0] + dx[d], (*it)[1] + dy[d] });
+    }
+    const auto poly = quad_region_polygon(R);
+    if(poly.empty())
+      continue;  // a hole or a pinched corner
+    const auto triangles = quad_ear_clipping(poly);
+    ASSERT_EQ(triangles.size(), poly.size() - 2);
+    ++tested;
+    quad_expect_cells_of_region(quad_flat_mesh(poly, triangles), R, "random region " + std::to_string(trial));
+    // each triangle split at its centroid (regular vertices off the grid, coordinates not dyadic)
+    std::vector<std::array<double, 2> > points = poly;
+    std::vector<std::array<std::size_t, 3> > split;
+    for(const auto& t : triangles)
+    {
+      points.push_back({ (poly[t[0]][0] + poly[t[1]][0] + poly[t[2]][0]) / 3, (poly[t[0]][1] + poly[t[1]][1] + poly[t[2]][1]) / 3 });
+      for(std::size_t k = 0; k < 3; ++k)
+        split.push_back({ t[k], t[(k + 1) % 3], points.size() - 1 });
+    }
+    quad_expect_cells_of_region(quad_flat_mesh(points, split), R, "random region " + std::to_string(trial) + ", split");
+  }
+  EXPECT_GE(tested, 40u);
+}
+namespace {
+
+// The box [0,1]^3, each side in two triangles (`centres`: four triangles around its
+// centre), and a hand-made seamless map: each side of the box mapped to the square
+// [0,3]^2 of its own chart (u, v) = 3 ((p - o).e1, (p - o).e2), with e1 x e2 the outward
+// normal. Across every box edge the charts differ by a quarter turn and an integer
+// translation; every box corner is a cone of three right angles (valence 3).
+struct Quad_box
+{
+  Mesh tm;
+  Quad_uv_map uv;
+};
+
+std::unique_ptr<Quad_box> quad_box(bool centres)
+{
+  struct Side { std::array<double, 3> o, e1, e2; };
+  const Side sides[6] = { { { 0, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 } }, { { 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0 } },
+                          { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } }, { { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 0 } },
+                          { { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 0 } }, { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
+  Soup<Point> soup;
+  std::map<std::array<double, 3>, std::size_t> index;
+  auto vertex = [&](const std::array<double, 3>& p) {
+    auto it = index.find(p);
+    if(it != index.end())
+      return it->second;
+    index[p] = soup.points.size();
+    soup.points.emplace_back(p[0], p[1], p[2]);
+    return soup.points.size() - 1;
+  };
+  for(const Side& s : sides)
+  {
+    std::array<std::size_t, 4> c;
+    for(int k = 0; k < 4; ++k)
+    {
+      const double a = (k == 1 || k == 2) ? 1 : 0, b = k >= 2 ? 1 : 0;
+      c[std::size_t(k)] = vertex({ s.o[0] + a * s.e1[0] + b * s.e2[0], s.o[1] + a * s.e1[1] + b * s.e2[1], s.o[2] + a * s.e1[2] + b * s.e2[2] });
+    }
+    if(centres)
+    {
+      const std::size_t m = vertex({ s.o[0] + 0.5 * (s.e1[0] + s.e2[0]), s.o[1] + 0.5 * (s.e1[1] + s.e2[1]), s.o[2] + 0.5 * (s.e1[2] + s.e2[2]) });
+      for(std::size_t k = 0; k < 4; ++k)
+        soup.faces.push_back({ c[k], c[(k + 1) % 4], m });
+    }
+    else
+      soup.add_quad(c[0], c[1], c[2], c[3]);
+  }
+  auto box = std::make_unique<Quad_box>();
+  box->tm = make_mesh<Mesh>(soup);
+  Mesh& tm = box->tm;
+  box->uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  for(Face f : faces(tm))
+  {
+    // the side of f: the one whose outward normal is f's normal
+    const Halfedge h0 = halfedge(f, tm);
+    const Vector n = CGAL::cross_product(tm.point(target(h0, tm)) - tm.point(source(h0, tm)),
+                                         tm.point(target(next(h0, tm), tm)) - tm.point(target(h0, tm)));
+    const Side* side = nullptr;
+    for(const Side& s : sides)
+    {
+      const Vector e1(s.e1[0], s.e1[1], s.e1[2]), e2(s.e2[0], s.e2[1], s.e2[2]);
+      if(n * CGAL::cross_product(e1, e2) > 0)
+        side = &s;
+    }
+    for(Halfedge h : halfedges_around_face(h0, tm))
+    {
+      const Point& p = tm.point(target(h, tm));
+      const Vector d = p - Point(side->o[0], side->o[1], side->o[2]);
+      box->uv[h] = { 3 * (d * Vector(side->e1[0], side->e1[1], side->e1[2])), 3 * (d * Vector(side->e2[0], side->e2[1], side->e2[2])) };
+    }
+  }
+  return box;
+}
+
+// The transition of every corner of the bundle's numbering (the k-th halfedge of face i
+// from halfedge(face), corner 3i + k): the grid symmetry z -> i^r z + t that maps the uv of
+// its edge's two endpoints in face(h) onto their uv in face(opposite(h)); false if none does.
+template <typename Bundle>
+bool quad_box_transitions(const Bundle& bundle, const Mesh& tm, Quad_uv_map uv, std::vector<PVF::Seam_transition>& out)
+{
+  out.assign(3 * num_faces(tm), PVF::Seam_transition());
+  auto turn = [](const UV& p, int r) {
+    UV q = p;
+    for(int k = 0; k < r; ++k)
+      q = { -q[1], q[0] };
+    return q;
+  };
+  for(std::size_t i = 0; i < num_faces(tm); ++i)
+  {
+    Halfedge h = halfedge(bundle.face(i), tm);
+    for(std::size_t k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      const Halfedge o = opposite(h, tm);
+      if(CGAL::is_border(o, tm))
+        continue;
+      // target(h): uv[h] here, uv[prev(o)] there; source(h): uv[prev(h)] here, uv[o] there
+      bool found = false;
+      for(int r = 0; r < 4 && !found; ++r)
+      {
+        const UV a = turn(uv[h], r), b = turn(uv[prev(h, tm)], r);
+        const double tx = uv[prev(o, tm)][0] - a[0], ty = uv[prev(o, tm)][1] - a[1];
+        if(uv[o][0] - b[0] == tx && uv[o][1] - b[1] == ty && tx == std::floor(tx) && ty == std::floor(ty))
+        {
+          out[3 * i + k].rotation = r;
+          out[3 * i + k].translation = { { std::int64_t(tx), std::int64_t(ty) } };
+          found = true;
+        }
+      }
+      if(!found)
+        return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+// A box with a hand-made seamless map (quarter turns across its edges, a cone of valence 3
+// at each corner): 6 sides of 3 x 3 quads, 54 quads, 56 vertices, a closed manifold of
+// Euler characteristic 2; the 8 box corners of valence 3, every box edge made of quad
+// edges. Grid lines run along the mesh edges (the box edges are seams) and along or
+// across the diagonals of the sides.
+TEST(QuadAligned, BoxWithQuarterTurnSeams)
+{
+  for(bool centres : { false, true })
+  {
+    SCOPED_TRACE(centres ? "4 triangles per side" : "2 triangles per side");
+    std::unique_ptr<Quad_box> box = quad_box(centres);
+    const Mesh& tm = box->tm;
+    ASSERT_EQ(num_faces(tm), centres ? 24u : 12u);
+    typedef PVF::Tangent_bundle<Mesh> Bundle;
+    const Bundle bundle(tm);
+    ASSERT_EQ(bundle.status(), PVF::Error_code::SUCCESS);
+    PVF::Integer_grid_map_result map;
+    ASSERT_TRUE(quad_box_transitions(bundle, tm, box->uv, map.seam_transitions));
+    std::size_t rotated = 0;
+    for(const PVF::Seam_transition& T : map.seam_transitions)
+      rotated += T.rotation != 0;
+    EXPECT_GT(rotated, 0u);
+    for(int overload = 0; overload < 2; ++overload)
+    {
+      Mesh qm;
+      PVF::Quad_extraction_result r;
+      const PVF::Error_code code = overload == 0 ? PVF::extract_quad_mesh(bundle, box->uv, map, qm, r)
+                                                 : PVF::extract_quad_mesh(tm, box->uv, qm, r);
+      ASSERT_EQ(code, PVF::Error_code::SUCCESS) << r.diagnostic;
+      const Quad_checks c = quad_checks(qm);
+      EXPECT_TRUE(c.valid);
+      EXPECT_TRUE(c.all_quads);
+      EXPECT_TRUE(c.closed);
+      EXPECT_EQ(num_faces(qm), 54u);
+      EXPECT_EQ(num_vertices(qm), 56u);
+      EXPECT_EQ(c.chi, 2);
+      EXPECT_EQ(c.components, 1u);
+      EXPECT_EQ(c.irregular, 8u);
+      EXPECT_EQ(r.singular_points, 8u);
+      EXPECT_EQ(r.folded_quads, 0u);
+      EXPECT_EQ(c.max_planarity, 0.0);
+      // every vertex on the lattice (1/3) Z^3 on the box, every edge of length 1/3 along an axis
+      std::size_t corners_of_valence_3 = 0;
+      for(Vertex v : vertices(qm))
+      {
+        const Point& p = qm.point(v);
+        for(int a = 0; a < 3; ++a)
+          EXPECT_NEAR(3 * p[a], std::round(3 * p[a]), 1e-12);
+        const bool corner = (p.x() == 0 || p.x() == 1) && (p.y() == 0 || p.y() == 1) && (p.z() == 0 || p.z() == 1);
+        corners_of_valence_3 += corner && degree(v, qm) == 3;
+      }
+      EXPECT_EQ(corners_of_valence_3, 8u);
+      for(auto e : edges(qm))
+      {
+        const Vector d = qm.point(target(halfedge(e, qm), qm)) - qm.point(source(halfedge(e, qm), qm));
+        EXPECT_NEAR(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()), 1.0 / 3, 1e-12);
+        EXPECT_NEAR(std::sqrt(d.squared_length()), 1.0 / 3, 1e-12);
+      }
+    }
+  }
+}
+namespace {
+
+// The strip [0, 1] x [0, 2] of uv = (x, y) (a grid of 24 x 4 squares, the identity map,
+// no fold-over) bent around a cylinder of axis y, by `angle` radians over its width:
+// for an angle of 3 pi / 2, each of its two cells wraps three quarters around the axis
+// and the straight quad between its corners faces the inside of the bend, against the
+// surface at both of its sides.
+Mesh quad_bent_strip(double angle, Quad_uv_map& uv)
+{
+  Mesh tm = grid(4, 24);
+  uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  for(Halfedge h : halfedges(tm))
+    if(!CGAL::is_border(h, tm))
+    {
+      const Point& p = tm.point(target(h, tm));
+      uv[h] = { p.x() / 24, p.y() / 2 };
+    }
+  const double rho = 0.25;
+  for(Vertex v : vertices(tm))
+  {
+    const Point p = tm.point(v);
+    const double phi = angle * p.x() / 24;
+    tm.point(v) = Point(rho * std::sin(phi), p.y() / 2, rho * (1 - std::cos(phi)));
+  }
+  return tm;
+}
+
+} // namespace
+
+// Quads folded against the surface are never returned: the strip bent by three quarter
+// turns gives FOLDED_QUAD with the number of folded quads (both), and the output mesh is
+// left untouched; bent by a quarter turn, it gives its two quads.
+TEST(QuadFolds, FoldedQuadIsAnError)
+{
+  {
+    Quad_uv_map uv;
+    const Mesh tm = quad_bent_strip(pi / 2, uv);
+    Mesh qm;
+    PVF::Quad_extraction_result r;
+    ASSERT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r), PVF::Error_code::SUCCESS) << r.diagnostic;
+    EXPECT_EQ(r.folded_quads, 0u);
+    EXPECT_EQ(num_faces(qm), 2u);
+  }
+  Quad_uv_map uv;
+  const Mesh tm = quad_bent_strip(3 * pi / 2, uv);
+  // without the repair, and with it: no corner position on the surface unfolds them
+  for(std::size_t rings : { std::size_t(0), std::size_t(6) })
+  {
+    Mesh qm = grid(1, 3);
+    PVF::Quad_extraction_result r;
+    EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r, PVF::parameters::fold_over_repair_rings(rings)), PVF::Error_code::FOLDED_QUAD);
+    EXPECT_EQ(r.flipped_faces, 0u);
+    EXPECT_EQ(r.folded_quads, 2u);
+    EXPECT_EQ(r.unfolded_quads, 0u);
+    EXPECT_NE(r.diagnostic.find("2 of the 2 quads fold against the surface"), std::string::npos) << r.diagnostic;
+    EXPECT_EQ(num_faces(qm), 6u);  // untouched
+  }
+  EXPECT_STREQ(PVF::get_error_message(PVF::Error_code::FOLDED_QUAD),
+               "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)");
 }

@@ -51,7 +51,8 @@ enum class Error_code
   DID_NOT_CONVERGE,              ///< an iterative method stopped at its iteration limit before reaching its target
   MAP_CHECK_FAILED,              ///< a computed integer-grid map failed the check made before it is returned: a seam not exact under its transition, a singular vertex off the integer grid, or transitions that do not compose to the identity around a regular vertex
   NO_INTEGER_CELL,               ///< a connected component of the surface has no whole cell of the integer-grid map: the quad size is larger than that part of the surface
-  TOO_FAR_FROM_SURFACE           ///< a moved vertex ended farther from the reference surface than the allowed distance (`planarize_quad_mesh()`'s `max_distance_to_surface`)
+  TOO_FAR_FROM_SURFACE,          ///< a moved vertex ended farther from the reference surface than the allowed distance (`planarize_quad_mesh()`'s `max_distance_to_surface`)
+  FOLDED_QUAD                    ///< a quad extracted from an integer-grid map is folded against the surface: neither of its diagonals splits it into two triangles that face the side of the input faces under it
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -93,6 +94,7 @@ inline const char* get_error_message(Error_code code)
     case Error_code::MAP_CHECK_FAILED: return "the computed integer-grid map failed its check (a seam not exact, a singular vertex off the integer grid, or transitions that do not close up around a regular vertex)";
     case Error_code::NO_INTEGER_CELL: return "the quad size is larger than the surface: a connected component has no whole integer cell, so no quad";
     case Error_code::TOO_FAR_FROM_SURFACE: return "a vertex moved farther from the reference surface than the allowed distance (max_distance_to_surface)";
+    case Error_code::FOLDED_QUAD: return "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)";
   }
   return "unknown error";
 }

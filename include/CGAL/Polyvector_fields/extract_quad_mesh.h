@@ -61,6 +61,9 @@ struct Quad_extraction_result
   std::size_t trimmed_polygons = 0;       ///< of which cells trimmed by the boundary (with `keep_trimmed_boundary`)
   std::size_t discarded_cells = 0;        ///< boundary cells dropped (whole-cell mode)
   std::size_t non_quad_cells = 0;         ///< closed cells with other than 4 corners (dropped; expected 0)
+  std::size_t folded_quads = 0;           ///< quads folded against the surface after the repair (`FOLDED_QUAD`; 0 on success)
+  std::size_t unfolded_quads = 0;         ///< folded quads repaired by moving their corners on the surface
+  std::size_t moved_quad_vertices = 0;    ///< quad vertices the repair moved (off their integer points, onto input vertices or edge midpoints)
   std::size_t split_vertices = 0;         ///< vertices duplicated because their kept faces formed several fans
   std::size_t irregular_vertices = 0;     ///< interior output vertices of valence != 4
   std::size_t components = 0;             ///< connected components of the input mesh (through its edges)
@@ -97,8 +100,9 @@ struct Quad_extraction_result
 /// iso-line/edge crossings and point-in-triangle tests are decided by exact
 /// comparisons and orientation predicates on the uv values; a point on an edge or
 /// at a vertex is one point for all the triangles around it (found through the mesh
-/// connectivity, never by distance). Positions: barycentric coordinates computed
-/// in exact rationals, rounded once.
+/// connectivity, never by distance). Positions: the barycentric combination of the
+/// triangle's corners, computed in exact rationals and rounded once per coordinate
+/// (a point of a flat mesh whose map is exact gets its exact coordinates).
 ///
 /// <b>Singular vertices.</b> A vertex whose uv angles sum to `(4 - k) pi/2` has
 /// `4 - k` iso-line directions, hence valence `4 - k` in the output.
@@ -110,6 +114,16 @@ struct Quad_extraction_result
 /// <b>Fold-overs.</b> Triangles with `det <= 0` are repaired before extraction:
 /// they and up to `fold_over_repair_rings` rings around them are re-embedded
 /// (Tutte, ring boundary fixed, exact transitions). Reported in `result`.
+///
+/// <b>Folded quads.</b> Every quad is checked against the input surface under it: it is
+/// folded when neither of its diagonals splits it into two triangles that face the side
+/// of the input faces there: of each face nearest to its centroid, and of the sum of
+/// the normals of the faces its sides were traced through. A quad folds where the surface bends by more than a right angle under it
+/// (a crease or a thin ridge finer than the quads). Unless `fold_over_repair_rings` is
+/// 0, a corner of a folded quad is then moved to the nearest point of the surface under
+/// its quads (a vertex of an input face, or an edge midpoint) that leaves every quad at
+/// that corner unfolded (`result.unfolded_quads`, `result.moved_quad_vertices`); a quad
+/// still folded makes the call fail with `FOLDED_QUAD`.
 ///
 /// All computations are done in `double` (and exact rationals where stated),
 /// whatever the kernels of `tm` and `quad_mesh`.
@@ -137,7 +151,8 @@ struct Quad_extraction_result
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{fold_over_repair_rings}
 ///     \cgalParamDescription{the largest number of vertex rings around a fold-over that its repair may
-///                           re-embed (0: no repair); given with `Polyvector_fields::parameters::fold_over_repair_rings()`}
+///                           re-embed (0: no repair, neither of the map's fold-overs nor of folded quads); given with
+///                           `Polyvector_fields::parameters::fold_over_repair_rings()`}
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{6}
 ///   \cgalParamNEnd
@@ -167,7 +182,9 @@ struct Quad_extraction_result
 ///          close up: see `result.diagnostic`); `UNREPAIRABLE_FOLD_OVER`; `NO_INTEGER_CELL` if a connected
 ///          component of `tm` gets no face, the quad size of the map being larger than that part of the
 ///          surface (`result.diagnostic` names the first such component; never an empty or partial quad
-///          mesh). `quad_mesh` is written only on success; `tm` is never changed.
+///          mesh); `FOLDED_QUAD` if a quad is still folded against the surface after the repair (see <b>Folded
+///          quads</b>), their number in `result.folded_quads`. `quad_mesh` is written only on success; `tm` is
+///          never changed.
 ///
 /// \sa `compute_integer_grid_map()`, `quad_planarity()`, `planarize_quad_mesh()`, `IO::write_quad_mesh_VTK()`
 template <typename TriangleMesh, typename UVMap, typename PolygonMesh,

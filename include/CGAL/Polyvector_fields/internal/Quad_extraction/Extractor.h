@@ -61,6 +61,7 @@ struct Trace_end
   std::size_t hit_edge = npos, hit_corner = npos;  // hit through a border edge, or at the vertex of a corner
   std::size_t crossings = 0;
   bool error = false;
+  std::vector<std::size_t> faces;  // the faces the iso-line went through, in order (the start face first)
 };
 
 class Extractor
@@ -404,6 +405,8 @@ public:
     for(std::size_t step = 0; step < 100000; ++step)
     {
       ++out.crossings;
+      if(out.faces.empty() || out.faces.back() != f)
+        out.faces.push_back(f);
       if(in_closed(f, q))
       {
         out.complete = true;

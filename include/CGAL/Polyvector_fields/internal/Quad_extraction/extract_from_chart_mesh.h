@@ -236,7 +236,7 @@ Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, const 
   collect_cells(X, trimmed, cells, result);
   result.time_faces = seconds(t);
   t = Clock::now();
-  code = build_quad_mesh(M, X, cells, quad_mesh, np_out, result);
+  code = build_quad_mesh(M, X, cells, ends, rings > 0, quad_mesh, np_out, result);
   if(code != Error_code::SUCCESS)
     return code;
   result.time_output = seconds(t);

@@ -16,6 +16,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Extractor.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_check.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Exact_rational.h>
@@ -24,6 +25,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -117,10 +119,12 @@ void collect_cells(const Extractor& X, bool trimmed, Cells& C, Report& result)
   }
 }
 
-// Builds the quad mesh (cleared first) from the cells. `result` is a Quad_extraction_result.
+// Builds the quad mesh (cleared first) from the cells, `ends` being the traces of the
+// iso-line slots; folded quads are repaired if `repair_folds`. `result` is a
+// Quad_extraction_result.
 template <typename PolygonMesh, typename NamedParametersOut, typename Report>
-Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, PolygonMesh& quad_mesh,
-                           const NamedParametersOut& np_out, Report& result)
+Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, const std::vector<Trace_end>& ends,
+                           bool repair_folds, PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result)
 {
   // sector i at point P: between slots[i] (outgoing of a face corner) and slots[i+1]
   std::vector<std::vector<std::size_t> > sector_face(X.points.size());
@@ -185,11 +189,17 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
                                                              Default_out_vpm>::type Out_vpm;
   typedef typename boost::property_traits<Out_vpm>::value_type Out_point;
   typedef CGAL::Exact_rational Q;
-  auto lerp3 = [&](const std::array<double, 3>* P, const double* w, std::size_t n) {
-    double x[3] = { 0, 0, 0 };
-    for(std::size_t i = 0; i < n; ++i)
-      for(int a = 0; a < 3; ++a)
-        x[a] += w[i] * P[i][a];
+  // sum of w[i] P[i], exact, rounded once per coordinate: a point that the map puts at a
+  // mesh vertex, or at a point with exact coordinates, gets exactly these coordinates
+  auto lerp3 = [&](const std::array<double, 3>* P, const Q* w, std::size_t n) {
+    double x[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      Q sum(0);
+      for(std::size_t i = 0; i < n; ++i)
+        sum += w[i] * Q(P[i][a]);
+      x[a] = CGAL::to_double(sum);
+    }
     return Out_point(x[0], x[1], x[2]);
   };
   std::vector<Out_point> positions;
@@ -221,9 +231,8 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
         std::swap(a, b);
         lam = Q(1) - lam;
       }
-      const double l = CGAL::to_double(lam);
       const std::array<double, 3> PP[2] = { M.point[M.vertex[a]], M.point[M.vertex[b]] };
-      const double w[2] = { 1 - l, l };
+      const Q w[2] = { Q(1) - lam, lam };
       positions.push_back(lerp3(PP, w, 2));
     }
     else
@@ -238,11 +247,11 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
         return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
       };
       const Q area = det(U[0][0], U[0][1], U[1][0], U[1][1], U[2][0], U[2][1]);
-      double w[3];
+      Q w[3];
       for(std::size_t k = 0; k < 3; ++k)
       {
         const std::size_t k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        w[k] = CGAL::to_double(det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area);
+        w[k] = det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area;
       }
       const std::array<double, 3> PP[3] = { M.point[M.vertex[3 * f]], M.point[M.vertex[3 * f + 1]], M.point[M.vertex[3 * f + 2]] };
       positions.push_back(lerp3(PP, w, 3));
@@ -317,6 +326,51 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       ++result.quads;
     else
       ++result.trimmed_polygons;
+  }
+  // Every quad is checked against the input faces under it (the faces its sides were
+  // traced through, and the face nearest to its centroid); the folded ones are repaired
+  // by moving their corners on the surface, or the extraction fails.
+  {
+    std::vector<std::vector<std::size_t> > quads(C.cells.size()), under(C.cells.size());
+    for(std::size_t f = 0; f < C.cells.size(); ++f)
+    {
+      if(polygons[f].size() != 4 || C.has_boundary_piece[f])
+        continue;
+      quads[f] = polygons[f];
+      for(std::size_t s : C.cells[f])
+      {
+        if(s < ends.size())
+          under[f].insert(under[f].end(), ends[s].faces.begin(), ends[s].faces.end());
+        if(X.slots[s].face < M.F)
+          under[f].push_back(X.slots[s].face);
+      }
+      std::sort(under[f].begin(), under[f].end());
+      under[f].erase(std::unique(under[f].begin(), under[f].end()), under[f].end());
+    }
+    std::vector<P3> pos(positions.size());
+    for(std::size_t v = 0; v < positions.size(); ++v)
+      pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+    const Fold_report fold = unfold_quads(M, quads, under, pos, repair_folds);
+    result.folded_quads = fold.folded - fold.unfolded;
+    result.unfolded_quads = fold.unfolded;
+    result.moved_quad_vertices = fold.moved_vertices;
+    if(result.folded_quads != 0)
+    {
+      P3 centre{ 0, 0, 0 };
+      for(std::size_t v : polygons[fold.first_folded])
+        for(int a = 0; a < 3; ++a)
+          centre[a] += 0.25 * pos[v][a];
+      result.diagnostic = std::to_string(result.folded_quads) + " of the " + std::to_string(polygons.size()) +
+                          " quads fold against the surface (neither diagonal gives two triangles on the side of the input "
+                          "faces under the quad), " + std::to_string(fold.unfolded) + " others were repaired; the first one near (" +
+                          std::to_string(centre[0]) + ", " + std::to_string(centre[1]) + ", " + std::to_string(centre[2]) +
+                          "): the surface bends by more than a right angle under one quad there";
+      return Error_code::FOLDED_QUAD;
+    }
+    for(std::size_t v = 0; v < positions.size(); ++v)
+      if(pos[v][0] != CGAL::to_double(positions[v].x()) || pos[v][1] != CGAL::to_double(positions[v].y()) ||
+         pos[v][2] != CGAL::to_double(positions[v].z()))
+        positions[v] = Out_point(pos[v][0], pos[v][1], pos[v][2]);
   }
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
   {

@@ -576,7 +576,8 @@ void make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, cons
   if(o.out_quads.empty())
     return;
   const PVF::internal::Timer extraction_timer;
-  check(PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction), "quad mesh");
+  const PVF::Error_code extracted = PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction);
+  check(extracted, "quad mesh", q.extraction.diagnostic);
   q.time_extraction = extraction_timer.elapsed();
   auto planarity = q.quads.add_property_map<Mesh::Face_index, double>("f:pvf_planarity").first;
   check(PVF::quad_planarity(q.quads, planarity, q.before), "planarity");

@@ -180,6 +180,9 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     std::cout << ", " << e.vertices << " vertices, " << e.irregular_vertices << " irregular vertices (valence != 4)";
     if(e.flipped_faces > 0)
       std::cout << "; " << e.flipped_faces << " flipped faces of the map, " << e.repaired_regions << " regions repaired";
+    if(e.unfolded_quads > 0)
+      std::cout << "; " << e.unfolded_quads << " folded quads repaired (" << e.moved_quad_vertices
+                << " vertices moved on the surface)";
     std::cout << "\nplanarity       max " << 100 * q.before.max << "%, mean " << 100 * q.before.mean << "%";
     if(q.planarized)
     {

@@ -173,19 +173,23 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
   // without the features around faces that stay flipped (see Features)
   std::vector<char> feature;
   const bool has_features = internal::feature_corners(M, np, feature);
+  auto t = std::chrono::steady_clock::now();
+  internal::Seamless_reduction seams;  // the seams' reduction, the same in every attempt
+  code = internal::reduce_seamless_variables(M, D, seams);
+  result.inconsistencies += seams.inconsistencies;
+  result.extra_integer_relations = seams.extra_relations;
+  if(code != Error_code::SUCCESS)
+    return code;
+  result.integer_unknowns_before_reduction = 2 * (result.comb.singular_vertices + result.comb.seam_curves);
+  result.time_reduction = internal::seconds_since(t);
   internal::Seamless_reduction R;
   internal::Guidance_system S;
   Eigen::VectorXd y;
   std::size_t nx = 0, m = 0;
   for(std::size_t attempt = 0;; ++attempt)
   {
-    auto t = std::chrono::steady_clock::now();
-    R = internal::Seamless_reduction();
-    code = internal::reduce_seamless_variables(M, D, R);
-    result.inconsistencies += R.inconsistencies;
-    result.extra_integer_relations = R.extra_relations;
-    if(code != Error_code::SUCCESS)
-      return code;
+    t = std::chrono::steady_clock::now();
+    R = seams;
     if(has_features)
     {
       internal::Feature_alignment_report features;
@@ -202,7 +206,6 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
     m = R.integer_columns;
     result.continuous_unknowns = nx;
     result.integer_unknowns = m;
-    result.integer_unknowns_before_reduction = 2 * (result.comb.singular_vertices + result.comb.seam_curves);
     result.time_reduction += internal::seconds_since(t);
     t = std::chrono::steady_clock::now();
     S = internal::Guidance_system();
@@ -224,7 +227,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
   }
 
   // output: snapped to a dyadic grid, so that seams and singularities are exact
-  const auto t = std::chrono::steady_clock::now();
+  t = std::chrono::steady_clock::now();
   code = internal::write_snapped_map(M, D, R, S, nx, m, y, uv_map, result);
   result.time_output = internal::seconds_since(t);
   result.time_total = internal::seconds_since(start);

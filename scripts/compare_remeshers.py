@@ -24,6 +24,10 @@ of quads in it:
     `"Instant Meshes" -o OUT -f N/4 -d M.obj`, then with `-c D` (creases). Its
     pure-quad output splits every face of a quad-dominant mesh of about N/4 faces
     into quads, hence about N quads;
+  - when M has a boundary (the checker counts boundary edges in it), QuadriFlow
+    also gets `-boundary` and Instant Meshes `-b`, their options that align the
+    field to the boundary (without them both leave many irregular vertices along
+    it); --no-boundary-options leaves them out;
   - check_quad_mesh (which does not use the package's code) checks our quad mesh
     and every other output against M with --sharp-edges D --min-area-ratio 0.
 Every run gets --timeout seconds (default 300) and runs alone. The outputs and
@@ -39,8 +43,8 @@ Meshes move vertices off the input surface, so the checker's `on_surface` check
 gives their largest distance too. After the table come the totals: irregular
 vertices per 1000 quads (sum over meshes, and median over meshes), over the
 meshes where a method has an output and over the meshes where all have one, and
-the meshes where ours has at least 1.5 times QuadriFlow's irregular vertices
-per 1000 quads. The progress goes to standard error.
+the same for the interior irregular vertices alone, and the meshes where ours
+has more irregular vertices per 1000 quads than another method (with the ratio). The progress goes to standard error.
 
 Example (part 5 of issue 21):
   scripts/run_corpus.py --out /tmp/c1 --sharp-edges 40 \\
@@ -77,6 +81,8 @@ def parse_arguments():
     parser.add_argument("--timeout", type=float, default=300, help="seconds per run before it is killed (default 300)")
     parser.add_argument("--work", default=os.path.join("output", "compare"),
                         help="folder of the triangle OBJ inputs, the outputs and the logs (default output/compare)")
+    parser.add_argument("--no-boundary-options", action="store_true",
+                        help="never give QuadriFlow -boundary nor Instant Meshes -b")
     parser.add_argument("--reuse", action="store_true",
                         help="keep an output already in the work folder instead of running the tool again")
     return parser.parse_args()
@@ -141,7 +147,7 @@ def check(arguments, mesh, quads):
     return summary
 
 
-def run_method(arguments, method, tri_obj, output, quad_count):
+def run_method(arguments, method, tri_obj, output, quad_count, boundary):
     """Runs one remesher; (status, seconds). status is 'ok', 'timeout', 'exit N' or 'no output'."""
     if arguments.reuse and os.path.isfile(output) and os.path.getsize(output) > 0:
         return "ok", 0.0
@@ -151,10 +157,14 @@ def run_method(arguments, method, tri_obj, output, quad_count):
         command = [arguments.quadriflow, "-i", tri_obj, "-o", output, "-f", str(quad_count)]
         if method == "qf-sharp":
             command.append("-sharp")
+        if boundary:
+            command.append("-boundary")
     else:
         command = [arguments.instant_meshes, "-o", output, "-f", str(max(1, round(quad_count / 4))), "-d"]
         if method == "im-crease":
             command += ["-c", "%g" % arguments.sharp_edges]
+        if boundary:
+            command.append("-b")
         command.append(tri_obj)
     code, out, err, seconds = run_corpus.run_process(command, arguments.timeout)
     with open(output + ".log", "w") as log:
@@ -175,8 +185,12 @@ def irregular(summary):
     return int(summary["irregular_interior"]) + int(summary["irregular_boundary"])
 
 
-def per_thousand(summary):
-    return 1000.0 * irregular(summary) / max(1, int(summary["quads"]))
+def interior(summary):
+    return int(summary["irregular_interior"])
+
+
+def per_thousand(summary, count=irregular):
+    return 1000.0 * count(summary) / max(1, int(summary["quads"]))
 
 
 def irregular_cell(summary):
@@ -224,40 +238,43 @@ def print_totals(methods, rows):
         return summary if status == "ok" and summary and "quads" in summary else None
 
     common = [results for _, results in rows if all(measured(results, m) for m in methods)]
-    print()
-    print("Irregular vertices (interior + boundary) per 1000 quads: sum over the meshes (total irregular / "
-          "total quads), and median of the meshes' ratios.")
-    print()
-    print("| method | meshes with an output | valid per checker | irregular / 1000 quads (sum) | median | "
-          "on the %d meshes where all have an output: sum | median |" % len(common))
-    print("|---|---:|---:|---:|---:|---:|---:|")
-    for method in methods:
-        summaries = [measured(results, method) for _, results in rows]
-        summaries = [s for s in summaries if s]
-        on_common = [measured(results, method) for results in common]
+    for title, count in (("Irregular vertices (interior + boundary)", irregular),
+                         ("Interior irregular vertices", interior)):
+        print()
+        print("%s per 1000 quads: sum over the meshes (total irregular / total quads), and median of the "
+              "meshes' ratios." % title)
+        print()
+        print("| method | meshes with an output | valid per checker | per 1000 quads (sum) | median | "
+              "on the %d meshes where all have an output: sum | median |" % len(common))
+        print("|---|---:|---:|---:|---:|---:|---:|")
+        for method in methods:
+            summaries = [measured(results, method) for _, results in rows]
+            summaries = [s for s in summaries if s]
+            on_common = [measured(results, method) for results in common]
 
-        def sum_and_median(items):
-            if not items:
-                return "", ""
-            total = 1000.0 * sum(irregular(s) for s in items) / max(1, sum(int(s["quads"]) for s in items))
-            return "%.2f (%d / %d)" % (total, sum(irregular(s) for s in items),
-                                       sum(int(s["quads"]) for s in items)), \
-                "%.2f" % statistics.median(per_thousand(s) for s in items)
-        all_sum, all_median = sum_and_median(summaries)
-        common_sum, common_median = sum_and_median(on_common)
-        valid = sum(1 for s in summaries if s.get("valid") == "1")
-        print("| %s | %d | %d | %s | %s | %s | %s |" % (METHOD_TITLES[method], len(summaries), valid, all_sum,
-                                                       all_median, common_sum, common_median))
+            def sum_and_median(items):
+                if not items:
+                    return "", ""
+                irregulars, quads = sum(count(s) for s in items), sum(int(s["quads"]) for s in items)
+                return ("%.2f (%d / %d)" % (1000.0 * irregulars / max(1, quads), irregulars, quads),
+                        "%.2f" % statistics.median(per_thousand(s, count) for s in items))
+            all_sum, all_median = sum_and_median(summaries)
+            common_sum, common_median = sum_and_median(on_common)
+            valid = sum(1 for s in summaries if s.get("valid") == "1")
+            print("| %s | %d | %d | %s | %s | %s | %s |" % (METHOD_TITLES[method], len(summaries), valid,
+                                                           all_sum, all_median, common_sum, common_median))
     for other in [m for m in methods if m != "ours"]:
         worse = []
         for name, results in rows:
             ours, theirs = measured(results, "ours"), measured(results, other)
-            if ours and theirs and per_thousand(ours) > 1.5 * per_thousand(theirs):
+            if ours and theirs and per_thousand(ours) > per_thousand(theirs):
                 ratio = per_thousand(ours) / per_thousand(theirs) if per_thousand(theirs) > 0 else float("inf")
-                worse.append("%s (%d vs %d, x%.2f per 1000 quads)" % (name, irregular(ours), irregular(theirs), ratio))
+                worse.append((ratio, "%s (%d in %s quads vs %d in %s, x%.2f)" % (
+                    name, irregular(ours), ours["quads"], irregular(theirs), theirs["quads"], ratio)))
+        worse.sort(key=lambda item: -item[0])
         print()
-        print("Meshes where ours has more than 1.5 times the irregular vertices per 1000 quads of %s: %s" % (
-            METHOD_TITLES[other], "; ".join(worse) if worse else "none"))
+        print("Meshes where ours has more irregular vertices per 1000 quads than %s: %s" % (
+            METHOD_TITLES[other], "; ".join(text for _, text in worse) if worse else "none"))
 
 
 def main():
@@ -294,15 +311,18 @@ def main():
             rows.append((name, results))
             continue
         for method in methods[1:]:
-            output = os.path.join(arguments.work, "%s.%s.obj" % (name, method))
-            status, seconds = run_method(arguments, method, tri_obj, output, quad_count)
+            boundary = not arguments.no_boundary_options and int(summary.get("boundary_edges", 0)) > 0
+            output = os.path.join(arguments.work, "%s.%s%s.obj" % (name, method, ".b" if boundary else ""))
+            status, seconds = run_method(arguments, method, tri_obj, output, quad_count, boundary)
             results[method] = (status, check(arguments, mesh, output) if status == "ok" else {})
             print("  %s: %s (%.1f s)" % (method, status, seconds), file=sys.stderr, flush=True)
         rows.append((name, results))
 
     print("Checker: `check_quad_mesh INPUT QUADS --sharp-edges %g --min-area-ratio 0`; QF: QuadriFlow `-f` at our "
-          "quad count%s." % (arguments.sharp_edges,
-                             "; IM: Instant Meshes `-f` a quarter of it, `-d`" if arguments.instant_meshes else ""))
+          "quad count%s%s." % (arguments.sharp_edges,
+                               "; IM: Instant Meshes `-f` a quarter of it, `-d`" if arguments.instant_meshes else "",
+                               "" if arguments.no_boundary_options else
+                               "; on meshes with a boundary, QF `-boundary` and IM `-b`"))
     print()
     print_table(methods, rows)
     print_totals(methods, rows)

@@ -26,8 +26,8 @@ of quads in it:
     into quads, hence about N quads;
   - when M has a boundary (the checker counts boundary edges in it), QuadriFlow
     also gets `-boundary` and Instant Meshes `-b`, their options that align the
-    field to the boundary (without them both leave many irregular vertices along
-    it); --no-boundary-options leaves them out;
+    field to the boundary (without it QuadriFlow leaves tens of irregular
+    vertices along a boundary); --no-boundary-options leaves them out;
   - check_quad_mesh (which does not use the package's code) checks our quad mesh
     and every other output against M with --sharp-edges D --min-area-ratio 0.
 Every run gets --timeout seconds (default 300) and runs alone. The outputs and

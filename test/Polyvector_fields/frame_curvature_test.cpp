@@ -419,6 +419,33 @@ TEST(CurvatureEstimation, FlatMeshesWithBoundary)
   }
 }
 
+// Issue 21: on a plane in general position (tilted, irregular points), the fit
+// returns round-off, with directions that mean nothing; the estimate says
+// exactly 0, and no face of the plane is constrained to curvature directions.
+TEST(CurvatureEstimation, TiltedPlaneIsExactlyFlat)
+{
+  Soup soup = flat_square(12);
+  const Vec3 e1 = { 0.6, 0.0, -0.8 }, e2 = { 0.48, 0.6, 0.36 };  // orthonormal, tilted
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for(Point& p : soup.points)
+  {
+    const double x = p.x() + jitter(rng), y = p.y() + jitter(rng);
+    p = Point(3 + x * e1[0] + y * e2[0], -1 + x * e1[1] + y * e2[1], 7 + x * e1[2] + y * e2[2]);
+  }
+  const Mesh tm = make_mesh<Mesh>(soup);
+  auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+  ASSERT_EQ(PVF::estimate_principal_curvatures(tm, map), PVF::Error_code::SUCCESS);
+  for(auto f : faces(tm))
+  {
+    EXPECT_EQ(get(map, f).k1, 0.);
+    EXPECT_EQ(get(map, f).k2, 0.);
+  }
+  std::vector<PVF::Face_constraint<Mesh::Face_index, Vector> > none(1);
+  EXPECT_EQ(PVF::select_curvature_constraints(tm, map, none), PVF::Error_code::SUCCESS);
+  EXPECT_TRUE(none.empty());
+}
+
 TEST(CurvatureEstimation, BoundaryOfOpenCylinder)
 {
   // Boundary faces are estimated too, with a one-sided neighbourhood: bounded

@@ -62,6 +62,13 @@ namespace Polyvector_fields {
 /// normal), the three 2x2 tensors are averaged in the frame of the face, and
 /// the average is diagonalised.
 ///
+/// <b>Flat faces.</b> A face whose two curvatures are both below `1e-6 / D`
+/// (`D` the diagonal of the bounding box of the mesh: a radius of curvature
+/// above a million times the size of the mesh) gets `k1 = k2 = 0` exactly:
+/// on a plane the fit returns round-off, with directions that mean nothing,
+/// and `select_curvature_constraints()` never constrains a face where
+/// `k1 = k2`.
+///
 /// The fit is done at the vertices because `Monge_via_jet_fitting` computes
 /// the Monge form at (the projection of) its first input point: a fit centred
 /// at a face barycenter, which is not on the surface, has a bias that does not

@@ -75,6 +75,10 @@ bool average_face_curvature(const Bundle& bundle, const std::vector<Curvature_ve
   return true;
 }
 
+// Curvatures below this over the bounding-box diagonal are those of a plane
+// (see estimate_face_principal_curvatures()).
+constexpr double flat_curvature_tolerance = 1e-6;
+
 // The principal curvatures of every face of a valid bundle, in the order of
 // its face numbering, and the number of vertices estimated by the fallback.
 // Returns SUCCESS or CURVATURE_ESTIMATION_FAILED (then `values` is undefined).
@@ -104,6 +108,23 @@ Error_code estimate_face_principal_curvatures(const Bundle& bundle, const Curvat
   for(std::size_t fi = 0; fi < nf; ++fi)
     if(!average_face_curvature(bundle, fits, fi, values[fi]))
       return Error_code::CURVATURE_ESTIMATION_FAILED;
+
+  // Flat faces: a curvature radius above 1/flat_curvature_tolerance times the
+  // bounding-box diagonal is the round-off of the fit on a plane, whose
+  // directions mean nothing; both curvatures are then exactly 0.
+  std::array<double, 3> lo = { 0, 0, 0 }, hi = { 0, 0, 0 };
+  for(std::size_t vi = 0; vi < nv; ++vi)
+    for(int k = 0; k < 3; ++k)
+    {
+      const double x = bundle.point(vi)[std::size_t(k)];
+      lo[std::size_t(k)] = vi == 0 ? x : (std::min)(lo[std::size_t(k)], x);
+      hi[std::size_t(k)] = vi == 0 ? x : (std::max)(hi[std::size_t(k)], x);
+    }
+  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  for(Curvature_value& value : values)
+    if(std::abs(value.k1) * diagonal < flat_curvature_tolerance && std::abs(value.k2) * diagonal < flat_curvature_tolerance)
+      value.k1 = value.k2 = 0;
   return Error_code::SUCCESS;
 }
 

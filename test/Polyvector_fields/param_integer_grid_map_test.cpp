@@ -868,19 +868,34 @@ TEST(IgmOutput, VtkAndNonFiniteValues)
 // Close singularities (issue 21): cancelled, merged or moved apart by the comb.
 // ---------------------------------------------------------------------------
 
+namespace {
+
+// bumpy, with a frame field that has many close singularities: 60 random full constraints.
+class IgmSingularities : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    tm = load("bumpy.off");
+    field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+    ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 60, 2, 11), field,
+                                           PVF::parameters::sign_symmetric(true)),
+              PVF::Error_code::SUCCESS);
+  }
+  Mesh tm;
+  Mesh::Property_map<Face, std::vector<Complex> > field;
+};
+
+} // namespace
+
 // A field with many close singularities: 60 random full constraints on bumpy.
 // The comb with a separation distance of twice the mean edge must keep the sum
 // of the indices, leave the counts it reports, and agree with the map: the index
 // that the map shows at every interior vertex (read from the uv angles, not from
 // the comb) is the comb's, and the map is seamless and has its singular corners
 // on integer points.
-TEST(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
+TEST_F(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
 {
-  Mesh tm = load("bumpy.off");
-  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
-  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 60, 2, 11), field,
-                                         PVF::parameters::sign_symmetric(true)),
-            PVF::Error_code::SUCCESS);
   std::vector<PVF::Singularity<Vertex> > sings;
   ASSERT_EQ(PVF::compute_singularities(tm, 4, field, std::back_inserter(sings)), PVF::Error_code::SUCCESS);
   int field_sum = 0;
@@ -951,4 +966,54 @@ TEST(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
               r.moved_singularities, r.split_singularities, map.flipped_faces);
   EXPECT_EQ(PVF::comb_frame_field(bundle, field, separated, PVF::parameters::singularity_cancellation_distance(-1.0)),
             PVF::Error_code::INVALID_PARAMETER);
+}
+
+// Two singular vertices joined by one edge a little longer than the separation
+// distance (a coarse mesh: no path between them is shorter than that edge)
+// may round to the same integer point, and fold every face between them: the
+// comb pairs them too. The case: an edge of length L between two singular
+// vertices that no other singular vertex comes within L of; with the distance
+// L / 1.2, the pair is only found through its edge.
+TEST_F(IgmSingularities, NeighboursJoinedByALongEdgeArePaired)
+{
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> kept;
+  ASSERT_EQ(PVF::comb_frame_field(bundle, field, kept), PVF::Error_code::SUCCESS);
+  std::vector<Vertex> singular;
+  for(Vertex v : vertices(tm))
+    if(kept.index_numerator(v) != 0 && !CGAL::is_border(v, tm))
+      singular.push_back(v);
+  // an isolated pair: no third singular vertex within L (Euclidean, so none along edges either)
+  Vertex a, b;
+  double L = 0;
+  for(auto e : edges(tm))
+  {
+    const Vertex s = source(halfedge(e, tm), tm), t = target(halfedge(e, tm), tm);
+    if(kept.index_numerator(s) == 0 || kept.index_numerator(t) == 0 || CGAL::is_border(s, tm) || CGAL::is_border(t, tm))
+      continue;
+    const double length = CGAL::Polygon_mesh_processing::edge_length(e, tm);
+    bool isolated = true;
+    for(Vertex w : singular)
+      if(w != s && w != t &&
+         (std::sqrt(CGAL::squared_distance(tm.point(w), tm.point(s))) <= length ||
+          std::sqrt(CGAL::squared_distance(tm.point(w), tm.point(t))) <= length))
+        isolated = false;
+    if(isolated && kept.index_numerator(s) + kept.index_numerator(t) >= -2 && kept.index_numerator(s) + kept.index_numerator(t) <= 1)
+    {
+      a = s;
+      b = t;
+      L = length;
+      break;
+    }
+  }
+  ASSERT_GT(L, 0.0) << "the case must have two neighbouring singular vertices apart from the others";
+  PVF::Frame_field_comb<Bundle> separated;
+  ASSERT_EQ(PVF::comb_frame_field(bundle, field, separated, PVF::parameters::singularity_cancellation_distance(L / 1.2)),
+            PVF::Error_code::SUCCESS);
+  // cancelled or merged: one of the two is regular now, and the index sum is kept
+  EXPECT_TRUE(separated.index_numerator(a) == 0 || separated.index_numerator(b) == 0)
+    << "indices " << separated.index_numerator(a) << " and " << separated.index_numerator(b);
+  EXPECT_EQ(separated.index_numerator(a) + separated.index_numerator(b),
+            kept.index_numerator(a) + kept.index_numerator(b));
 }

@@ -411,4 +411,59 @@ TEST(Features, BorderOnIsoLinesIsCoveredToTheEdge)
   EXPECT_NEAR(border, 10.0, 1e-9);
 }
 
+// Issue 21: a feature curve that bends at a vertex between two edges longer
+// than a quad (the rim of a coarse cylinder) has a quad corner there, so that
+// the quad edges, straight in space, follow the polygon instead of cutting its
+// corners. Without it, the 16-gon rims below get 31 or 32 quad edges each
+// whose ends fall anywhere on the polygon.
+TEST(Features, PolygonalRimHasAQuadCornerAtEveryBend)
+{
+  const int sides = 16;
+  const double pi = CGAL_PI;
+  // the open cylinder of radius 1 and height 1 on two 16-gons, one quad (two
+  // triangles) per side; the polygon is uneven (sides of 1.35 to 2.5 quads),
+  // so that a map without corners would not meet its vertices by chance
+  auto angle = [&](int i) { return 2 * pi * i / sides + 0.06 * std::sin(3.0 * i); };
+  Mesh cylinder;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= 1; ++j)
+    for(int i = 0; i < sides; ++i)
+      v.push_back(cylinder.add_vertex(Point(std::cos(angle(i)), std::sin(angle(i)), double(j))));
+  for(int i = 0; i < sides; ++i)
+  {
+    const int k = (i + 1) % sides;
+    cylinder.add_face(v[i], v[k], v[sides + k]);
+    cylinder.add_face(v[i], v[sides + k], v[sides + i]);
+  }
+  Feature_road road;
+  feature_road(cylinder, 0.2, true, road);
+  if(HasFatalFailure())
+    return;
+  const PVF::Integer_grid_map_result& r = road.map;
+  EXPECT_EQ(r.aligned_feature_edges, r.feature_edges);
+  EXPECT_EQ(r.flipped_faces, 0u);
+  // the 2 x 16 rim vertices are quad vertices
+  const Mesh& q = road.quads;
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(q));
+  std::size_t rim_corners = 0;
+  for(int j = 0; j <= 1; ++j)
+    for(int i = 0; i < sides; ++i)
+    {
+      const Point p(std::cos(angle(i)), std::sin(angle(i)), double(j));
+      double nearest = std::numeric_limits<double>::infinity();
+      for(auto v : vertices(q))
+        nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(p, q.point(v))));
+      rim_corners += nearest < 1e-9;
+    }
+  EXPECT_EQ(rim_corners, std::size_t(2 * sides));
+  // the quad mesh's border is the two polygons
+  double border = 0, perimeter = 0;
+  for(auto h : halfedges(q))
+    if(q.is_border(h))
+      border += PMP::edge_length(h, q);
+  for(int i = 0; i < sides; ++i)
+    perimeter += 2 * 2 * std::abs(std::sin((angle((i + 1) % sides) - angle(i)) / 2));
+  EXPECT_NEAR(border, perimeter, 1e-9);
+}
+
 } // namespace

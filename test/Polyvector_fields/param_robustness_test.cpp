@@ -183,13 +183,51 @@ TEST(RobustMap, StiffeningWeightsStayBoundedAndSolvable)
     row_weight[k] = std::sqrt(weight[k / 4]);
   Eigen::VectorXd y_continuous, y_rounded;
   PVF::Integer_grid_map_result report;
-  ASSERT_EQ(I::solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, PVF::Default_real_sparse_solver(), false, y_continuous,
-                                   y_rounded, report),
+  ASSERT_EQ(I::solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, std::vector<I::Distinct_points>(),
+                                   PVF::Default_real_sparse_solver(), false, y_continuous, y_rounded, report),
             PVF::Error_code::SUCCESS);
   ASSERT_EQ(y_rounded.size(), Eigen::Index(nx + m));
   EXPECT_TRUE(y_rounded.allFinite());
   for(std::size_t i = nx; i < nx + m; ++i)
     EXPECT_NEAR(y_rounded[Eigen::Index(i)], std::round(y_rounded[Eigen::Index(i)]), 1e-6);  // exact once snapped
+}
+
+// Two integer points that round to the same point fold every face between
+// them: the rounding takes the other integer next to the minimiser for the
+// last unknown of their difference. Here x (continuous) wants 0, and the
+// integer unknowns n0 and n1 want 0.3 and 0.4: both round to 0 unless
+// n0 - n1 must not vanish. n0 is rounded first (closer to an integer), then
+// n1 takes 1. Both the greedy updates and the refactoring reference.
+TEST(RobustMap, RoundingKeepsTwoIntegerPointsApart)
+{
+  namespace I = PVF::internal;
+  Eigen::SparseMatrix<double> B(3, 3);
+  B.insert(0, 0) = 1;
+  B.insert(1, 1) = 1;
+  B.insert(2, 2) = 1;
+  B.makeCompressed();
+  Eigen::VectorXd d(3);
+  d << 0, 0.3, 0.4;
+  const std::vector<double> row_weight(3, 1.0);
+  I::Distinct_points apart;
+  apart.terms = { { 0, 1, 0 }, { 1, -1, 0 } };
+  for(bool refactor : { false, true })
+  {
+    Eigen::VectorXd y_continuous, y_rounded;
+    PVF::Integer_grid_map_result report;
+    ASSERT_EQ(I::solve_mixed_integer(B, d, row_weight, 1, 2, std::vector<I::Distinct_points>(),
+                                     PVF::Default_real_sparse_solver(), refactor, y_continuous, y_rounded, report),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(y_rounded[1], 0.0);
+    EXPECT_EQ(y_rounded[2], 0.0) << "without the form, both round to the same integer";
+    EXPECT_EQ(report.integer_point_collisions_avoided, 0u);
+    ASSERT_EQ(I::solve_mixed_integer(B, d, row_weight, 1, 2, std::vector<I::Distinct_points>{ apart },
+                                     PVF::Default_real_sparse_solver(), refactor, y_continuous, y_rounded, report),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(y_rounded[1], 0.0) << refactor;
+    EXPECT_EQ(y_rounded[2], 1.0) << refactor;
+    EXPECT_EQ(report.integer_point_collisions_avoided, 1u) << refactor;
+  }
 }
 
 // ---------------------------------------------------------------------------

@@ -262,7 +262,9 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///     \cgalParamDefault{10 degrees}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{singularity_cancellation_distance}
-///     \cgalParamDescription{singular vertices closer than this, along mesh edges, are handled
+///     \cgalParamDescription{singular vertices closer than this along mesh edges, or joined by one edge
+///                           shorter than sqrt(2) times this (on a coarse mesh two such vertices may
+///                           round to the same integer point), are handled
 ///                           pair by pair, the closest first: opposite indices cancel, a pair whose
 ///                           merged index makes a quad vertex of valence 3 to 6 merges, any other
 ///                           pair (two of index 1/4) is moved apart. Before that, a singular vertex

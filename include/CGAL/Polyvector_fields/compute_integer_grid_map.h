@@ -90,11 +90,12 @@ struct Integer_grid_map_result
   std::size_t dropped_feature_edges = 0;  ///< of them, left free because their relation could not be eliminated over the integers (expected 0)
   std::size_t released_feature_edges = 0; ///< of them, left free because faces around them stayed flipped with them aligned (see <b>Features</b>)
   std::size_t feature_vertices = 0;       ///< vertices on an aligned feature edge
-  std::size_t feature_corners = 0;        ///< of them, regular vertices put on an integer point because the field follows two feature curves there
+  std::size_t feature_corners = 0;        ///< of them, regular vertices put on an integer point: the field follows two feature curves there, or one that turns (see Features)
   std::size_t flipped_faces = 0;          ///< faces with det(grad uv) <= 0 in the output
   std::vector<std::size_t> flipped_per_round;  ///< flipped faces after each stiffening round
   std::size_t stiffening_rounds = 0;      ///< solves after the first one
   std::size_t factorizations = 0;         ///< numeric factorizations of the sparse system
+  std::size_t integer_point_collisions_avoided = 0;  ///< roundings that took the other integer next to the minimiser, so that two integer points of one face (singular vertices, feature corners) did not meet (all rounds)
   double target_edge_length = 0;          ///< h used
   double mean_edge_length = 0;            ///< of the mesh
   double continuous_energy = 0;           ///< sum A_f |grad uv - J*_f|^2 of the continuous (unrounded) optimum, unit weights
@@ -193,7 +194,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
     if(has_features)
     {
       internal::Feature_alignment_report features;
-      internal::align_features(M, D, feature, internal::max_feature_angle, R, features);
+      internal::align_features(M, D, feature, internal::max_feature_angle, h, R, features);
       result.aligned_feature_edges = features.aligned_edges;
       result.unaligned_feature_edges = features.unaligned_edges;
       result.dropped_feature_edges = features.dropped_edges;
@@ -273,7 +274,12 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// of each edge is eliminated exactly over the integers (as the seams), so the
 /// alignment is exact in the output. A vertex where the field follows two
 /// feature curves (a corner of a box) gets both coordinates integer: a quad
-/// corner. A feature edge along which neither field direction runs is left
+/// corner. So does a vertex where one feature curve turns by more than
+/// 5 degrees between two edges at least one quad long (the rim of a coarse
+/// cylinder): a quad edge is straight in space, and without a corner there it
+/// would cut the bend. A finely sampled curve (shorter edges) keeps its
+/// vertices free along the iso-line: consecutive integer points would make
+/// it rigid, and fold the map where the field turns against the curve. A feature edge along which neither field direction runs is left
 /// free and counted (`unaligned_feature_edges`): where feature curves meet
 /// at an angle that the frame does not have (two creases at 30 degrees, say,
 /// with an orthogonal frame), only the curve that the field follows is on an
@@ -289,7 +295,10 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// `sparse_linear_solver`); the integer unknowns are eliminated through their
 /// Schur complement (dense, small), rounded greedily (closest to an integer
 /// first) with an exact O(m^2) update of the minimiser and of the inverse per
-/// rounding. Then faces with `det(grad uv) <= 0` and the faces around them get
+/// rounding. Two integer points of one face (singular vertices, feature
+/// corners) are kept apart: when the nearest integer of the last free unknown
+/// of their difference would make them meet, the integer on the other side of
+/// the minimiser is taken (`integer_point_collisions_avoided`). Then faces with `det(grad uv) <= 0` and the faces around them get
 /// a larger weight and the problem is solved again, at most
 /// `number_of_iterations` times (stiffening); the round with the fewest flips is kept.
 ///

@@ -46,6 +46,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -65,6 +66,11 @@ namespace internal {
 // field designed with the features as constraints runs exactly along them;
 // the margin covers a field that follows a border without being told to.
 constexpr double max_feature_angle = CGAL_PI / 6;
+
+// A feature curve that turns by more than this at a vertex, between two edges
+// of at least min_corner_edge quads, has a quad corner there (align_features()).
+constexpr double min_feature_turn = CGAL_PI / 36;  // 5 degrees
+constexpr double min_corner_edge = 1.0;
 
 // The feature corners of the named parameters: edge_is_constrained_map (sharp
 // edges), and the border edges with boundary_alignment. Returns whether there is one.
@@ -98,6 +104,7 @@ struct Feature_alignment_report
   std::size_t dropped_edges = 0;    // of them, free: their relation had no unit coefficient
   std::size_t feature_vertices = 0; // vertices on an aligned edge
   std::size_t feature_corners = 0;  // of them, on an integer point (both coordinates)
+  std::size_t turning_corners = 0;  // of those, put there because their feature curve turns
 };
 
 // The coordinate (0: U, 1: V) that stays constant along the edge of corner c
@@ -129,7 +136,7 @@ int constant_coordinate(const CornerMesh& M, const Comb_data& D, std::size_t c, 
 // terms, column counts and feature_coordinate are rewritten.
 template <typename CornerMesh>
 void align_features(const CornerMesh& M, const Comb_data& D, const std::vector<char>& feature, double max_angle,
-                    Seamless_reduction& R, Feature_alignment_report& report)
+                    double quad_size, Seamless_reduction& R, Feature_alignment_report& report)
 {
   typedef std::map<std::size_t, long long> Form;  // column -> integer coefficient
   const std::size_t C = 3 * M.F, nx = R.continuous_columns, columns = nx + R.integer_columns;
@@ -178,6 +185,50 @@ void align_features(const CornerMesh& M, const Comb_data& D, const std::vector<c
       for(const auto& kv : f)
         if(kv.first < nx && kv.second != 0)
           integer_column[kv.first] = promoted[kv.first] = 1;
+    }
+  }
+
+  // 2b. Turning vertices: a regular vertex with exactly two aligned feature
+  //     edges, which turn there by more than min_feature_turn and are both at
+  //     least min_corner_edge quads long, goes on an integer point (both of
+  //     its unknowns integer). A quad edge between two integer points of one
+  //     iso-line is straight in space: without this, it would cut the corner of
+  //     a polygonal feature (the rim of a coarse cylinder) instead of following
+  //     it. Shorter edges (a finely sampled curve) are left alone: two integer
+  //     points closer than one quad would fold the map.
+  {
+    std::vector<std::vector<std::size_t> > neighbours(M.V);
+    for(std::size_t c = 0; c < C; ++c)
+    {
+      if(R.feature_coordinate[c] < 0)
+        continue;
+      const std::size_t a = M.source(c), b = M.target[c];
+      for(const auto& [x, y] : { std::make_pair(a, b), std::make_pair(b, a) })
+        if(std::find(neighbours[x].begin(), neighbours[x].end(), y) == neighbours[x].end())
+          neighbours[x].push_back(y);
+    }
+    const double cos_turn = std::cos(min_feature_turn);
+    for(std::size_t v = 0; v < M.V; ++v)
+    {
+      if(neighbours[v].size() != 2 || R.vertex_kind[v] != 0 || M.vertex_corner[v] == npos)
+        continue;
+      const std::array<double, 3> in = difference(M.point[v], M.point[neighbours[v][0]]),
+                                  out = difference(M.point[neighbours[v][1]], M.point[v]);
+      const double a = std::sqrt(in[0] * in[0] + in[1] * in[1] + in[2] * in[2]),
+                   b = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+      if(!(a >= min_corner_edge * quad_size) || !(b >= min_corner_edge * quad_size))
+        continue;
+      if((in[0] * out[0] + in[1] * out[1] + in[2] * out[2]) / (a * b) > cos_turn)
+        continue;  // straight there
+      for(int j = 0; j < 2; ++j)
+      {
+        Form f;
+        coordinate_form(M.vertex_corner[v], j, 1, f);
+        for(const auto& kv : f)
+          if(kv.first < nx && kv.second != 0)
+            integer_column[kv.first] = promoted[kv.first] = 1;
+      }
+      ++report.turning_corners;
     }
   }
 

@@ -56,11 +56,89 @@ inline double seconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+// Two integer points of one face (two singular vertices, say) that the
+// rounding must not put on the same point, which would fold the faces
+// between them: the difference of their uv in that face's chart, an integer
+// linear form over the integer unknowns (indices 0 .. m-1), with Gaussian
+// integer coefficients (the u and v of each unknown's contribution).
+struct Distinct_points
+{
+  struct Term
+  {
+    std::size_t unknown;
+    long long u, v;
+  };
+  std::vector<Term> terms;
+};
+
+// The greedy rounding's guard against Distinct_points: the forms that each
+// unknown completes, and how many of each form's unknowns are still free.
+class Collision_guard
+{
+public:
+  Collision_guard(const std::vector<Distinct_points>& forms, std::size_t m) : m_forms(forms), m_of(m), m_free(forms.size())
+  {
+    for(std::size_t k = 0; k < forms.size(); ++k)
+    {
+      m_free[k] = forms[k].terms.size();
+      for(const auto& t : forms[k].terms)
+        m_of[t.unknown].push_back(k);
+    }
+  }
+  // The integer for unknown j, whose minimiser is x and nearest integer
+  // `value`: `value`, or the integer on the other side of x when `value`
+  // would close a form at zero and the other would not. `n` holds the
+  // integers already chosen.
+  template <typename Vector>
+  double choose(std::size_t j, double x, double value, const Vector& n, std::size_t& avoided) const
+  {
+    if(!collides(j, value, n))
+      return value;
+    const double other = value + (x >= value ? 1 : -1);
+    if(collides(j, other, n))
+      return value;
+    ++avoided;
+    return other;
+  }
+  void fix(std::size_t j)
+  {
+    for(std::size_t k : m_of[j])
+      --m_free[k];
+  }
+
+private:
+  template <typename Vector>
+  bool collides(std::size_t j, double value, const Vector& n) const
+  {
+    for(std::size_t k : m_of[j])
+    {
+      if(m_free[k] != 1)
+        continue;  // another unknown of the form is still free
+      long long u = 0, v = 0;
+      for(const auto& t : m_forms[k].terms)
+      {
+        const long long x = std::llround(t.unknown == j ? value : double(n[Eigen::Index(t.unknown)]));
+        u += t.u * x;
+        v += t.v * x;
+      }
+      if(u == 0 && v == 0)
+        return true;
+    }
+    return false;
+  }
+  const std::vector<Distinct_points>& m_forms;
+  std::vector<std::vector<std::size_t> > m_of;
+  std::vector<std::size_t> m_free;
+};
+
 // One solve of the mixed-integer problem with face weights w:
-// minimise |W^(1/2)(B y - d)|^2, y = (x continuous, n integer).
+// minimise |W^(1/2)(B y - d)|^2, y = (x continuous, n integer), rounding so
+// that no form of `distinct` becomes zero where the other integer next to the
+// minimiser avoids it.
 template <typename SolverTraits, typename Report>
 Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eigen::VectorXd& d1,
                                const std::vector<double>& row_weight, std::size_t nx, std::size_t m,
+                               const std::vector<Distinct_points>& distinct,
                                const SolverTraits& prototype, bool refactor_per_rounding,
                                Eigen::VectorXd& y_continuous, Eigen::VectorXd& y_rounded,
                                Report& result)
@@ -155,6 +233,7 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
   t = std::chrono::steady_clock::now();
 
   std::vector<char> free_var(m, 1);
+  Collision_guard guard(distinct, m);
   if(!refactor_per_rounding)
   {
     // Greedy rounding, the unknown closest to an integer first. Fixing n_j = v
@@ -175,7 +254,8 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
           }
         }
       const Eigen::Index J = Eigen::Index(j);
-      const double value = std::round(n[J]), hjj = H(J, J);
+      const double value = guard.choose(j, n[J], std::round(n[J]), n, result.integer_point_collisions_avoided),
+                   hjj = H(J, J);
       if(!(hjj > 0))
         return Error_code::SOLVER_FAILURE;
       const Eigen::VectorXd h = H.col(J);
@@ -183,6 +263,7 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
       H.noalias() -= h * (h.transpose() / hjj);
       n[J] = value;
       free_var[j] = 0;
+      guard.fix(j);
     }
     result.time_rounding += seconds_since(t);
   }
@@ -205,8 +286,10 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
             j = i;
           }
         }
-      current[Eigen::Index(j)] = std::round(current[Eigen::Index(j)]);
+      const double x = current[Eigen::Index(j)];
+      current[Eigen::Index(j)] = guard.choose(j, x, std::round(x), current, result.integer_point_collisions_avoided);
       free_var[j] = 0;
+      guard.fix(j);
       auto t1 = std::chrono::steady_clock::now();
       std::vector<Eigen::Triplet<double> > select;
       Eigen::VectorXd fixed_part = Eigen::VectorXd::Zero(Eigen::Index(m));

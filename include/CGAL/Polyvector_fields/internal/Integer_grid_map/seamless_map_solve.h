@@ -35,6 +35,7 @@
 #include <complex>
 #include <cstddef>
 #include <limits>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -235,6 +236,57 @@ std::size_t release_features_near_flips(const CornerMesh& M, const Seamless_redu
   return released;
 }
 
+// The pairs of corners of one face whose vertices are both integer points
+// (singular vertices, feature corners, the pinned vertex: no continuous
+// column in their terms), as forms over the integer unknowns (column - nx):
+// the rounding keeps them apart (mixed_integer_solve.h).
+template <typename CornerMesh>
+std::vector<Distinct_points> integer_point_pairs(const CornerMesh& M, const Seamless_reduction& R)
+{
+  const std::size_t nx = R.continuous_columns;
+  auto integer_only = [&](std::size_t c) {
+    if(R.corner_terms[c].empty())
+      return false;
+    for(const Corner_term& t : R.corner_terms[c])
+      if(t.column < nx)
+        return false;
+    return true;
+  };
+  std::vector<Distinct_points> pairs;
+  std::set<std::pair<std::size_t, std::size_t> > seen;  // vertex pairs, one form each
+  for(std::size_t f = 0; f < M.F; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t a = 3 * f + k, b = 3 * f + (k + 1) % 3;
+      if(!integer_only(a) || !integer_only(b))
+        continue;
+      if(!seen.insert(std::make_pair((std::min)(M.target[a], M.target[b]), (std::max)(M.target[a], M.target[b]))).second)
+        continue;
+      Distinct_points form;
+      auto add = [&](const Corner_term& t, long long sign) {
+        const long long u = sign * std::llround(t.u), v = sign * std::llround(t.v);
+        for(auto& x : form.terms)
+          if(x.unknown == t.column - nx)
+          {
+            x.u += u;
+            x.v += v;
+            return;
+          }
+        form.terms.push_back({ t.column - nx, u, v });
+      };
+      for(const Corner_term& t : R.corner_terms[a])
+        add(t, 1);
+      for(const Corner_term& t : R.corner_terms[b])
+        add(t, -1);
+      form.terms.erase(std::remove_if(form.terms.begin(), form.terms.end(),
+                                      [](const Distinct_points::Term& t) { return t.u == 0 && t.v == 0; }),
+                       form.terms.end());
+      if(!form.terms.empty())
+        pairs.push_back(std::move(form));
+    }
+  return pairs;
+}
+
 // The largest weight stiffening gives a face (the others start at 1). Without
 // a bound, faces that stay flipped round after round see their weight
 // multiplied by at least 2 per round: after 20 rounds on cow.off (5234
@@ -283,6 +335,7 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
                                  const Seamless_map_parameters& p, const Solver& solver_prototype,
                                  const Seamless_reduction& R, Eigen::VectorXd& best_y, Report& result)
 {
+  const std::vector<Distinct_points> distinct = integer_point_pairs(M, R);
   const std::size_t F = M.F, C = 3 * F;
   std::vector<double> weight(F, 1.0), row_weight(4 * F, 1.0);
   Eigen::VectorXd y_cont, y_round;
@@ -299,7 +352,7 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
     for(std::size_t f = 0; f < F; ++f)
       for(int k = 0; k < 4; ++k)
         row_weight[4 * f + std::size_t(k)] = std::sqrt(weight[f]);
-    const Error_code code = solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, solver_prototype, p.refactor && round == 0,
+    const Error_code code = solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, distinct, solver_prototype, p.refactor && round == 0,
                                                 y_cont, y_round, result);
     if(code != Error_code::SUCCESS)
       return code;

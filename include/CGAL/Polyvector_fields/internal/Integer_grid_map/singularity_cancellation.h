@@ -57,8 +57,13 @@ int matching_holonomy(const CornerMesh& M, const std::vector<int>& shift, std::s
   return mod4(sum);
 }
 
-// Singularities closer than `distance` along mesh edges, handled pair by pair,
-// the closest first:
+// Singular vertices joined by an edge shorter than this many times the
+// separation distance also form a pair (see separate_close_singularities()).
+constexpr double adjacent_pair_factor = 1.4142135623730951;
+
+// Singularities closer than `distance` along mesh edges, or joined by one
+// edge shorter than adjacent_pair_factor * distance, handled pair by pair, the
+// closest first:
 // - opposite indices (+k, -k) cancel: the index moves from one to the other;
 // - a pair whose merged index k satisfies -2 <= k <= 1 (a quad vertex of valence
 //   3 to 6) merges into one of the two;
@@ -242,6 +247,16 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
       return false;
     });
     reset();
+    // Two singular vertices joined by one edge shorter than sqrt(2) quads
+    // (a coarse mesh) may still round to the same integer point: they are a
+    // pair too, joined by that edge.
+    for(std::size_t c : out[s])
+    {
+      const std::size_t v = M.target[c];
+      const double length = M.edge_length(c);
+      if(v > s && index[v] != 0 && !M.border_vertex[v] && length >= distance && length < adjacent_pair_factor * distance)
+        pairs.push_back({ length, s, v });
+    }
   }
   std::sort(pairs.begin(), pairs.end(),
             [](const Pair& x, const Pair& y) { return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b); });
@@ -255,7 +270,8 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
     {
       // cancel or merge: move a's index onto b
       bool reached = false;
-      search({ pair.a }, distance, [&](std::size_t v, double) { return reached = (v == pair.b); });
+      search({ pair.a }, (std::max)(distance, std::nextafter(pair.length, 2 * pair.length + 1)),
+             [&](std::size_t v, double) { return reached = (v == pair.b); });
       if(reached)
       {
         transfer(pair.a, pair.b, index[pair.a]);

@@ -36,7 +36,7 @@
 // Any error code with a message is fine, but no crash and no exception. Checked:
 //  - select_sharp_edge_constraints(): the marked edges are the border edges
 //    (boundary_alignment only) and the interior edges whose dihedral angle is
-//    above the threshold (clear cases: 1e-6 degree away from it);
+//    above the threshold (clear cases: 0.01 degree away from it);
 //  - refine_for_quad_size(): a valid triangle mesh, one origin per face, the
 //    same area, no edge longer than 2 h, the feature length kept, and no
 //    interior non-feature edge between two feature vertices;
@@ -231,10 +231,12 @@ PVF_FUZZ_TARGET(quad_map)
         PVF_FUZZ_CHECK(features[e] == border, "a border edge marked against boundary_alignment");
         continue;
       }
+      // acos() near 1 loses half of the digits: a dihedral angle of ~1e-6
+      // degree is 0 to detect_sharp_edges(); only clear cases are checked.
       const double angle = dihedral_degrees(e, tm);
-      if(angle > sharp_angle + 1e-6)
+      if(angle > sharp_angle + 1e-2)
         PVF_FUZZ_CHECK(features[e], "a sharp edge (" + std::to_string(angle) + " degrees) not marked");
-      if(angle < sharp_angle - 1e-6)
+      if(angle < sharp_angle - 1e-2)
         PVF_FUZZ_CHECK(!features[e], "an edge of " + std::to_string(angle) + " degrees marked sharp");
     }
   }

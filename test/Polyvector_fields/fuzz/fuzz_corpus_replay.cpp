@@ -27,6 +27,8 @@
 #include "fuzz_obj_mesh.cpp"
 #include "fuzz_design.cpp"
 #include "fuzz_meshing.cpp"
+#include "fuzz_quad_map.cpp"
+#include "fuzz_planarize.cpp"
 
 #include <algorithm>
 #include <chrono>

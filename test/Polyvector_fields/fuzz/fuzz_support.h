@@ -69,6 +69,14 @@ inline void check_failure_reported(Error_code code, const std::string& message, 
   PVF_FUZZ_CHECK(!message.empty(), std::string(what) + " failed with " + code_name(code) + " and no message");
 }
 
+// Reads the input byte by byte; past its end every byte is 0.
+struct Byte_reader
+{
+  const std::uint8_t* data;
+  std::size_t size, next = 0;
+  std::uint8_t get() { return next < size ? data[next++] : 0; }
+};
+
 inline bool finite(const Vector& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 
 inline bool same_vector(const Vector& a, const Vector& b)

@@ -48,6 +48,11 @@ if [[ "${1:-}" == merge ]]; then
 fi
 
 build="$(cd "$1" && pwd)"; target="$2"; runs="${3:-1000000}"; shift $(( $# >= 3 ? 3 : $# ))
+# One core: no thread pools in the BLAS under CHOLMOD. A small quarantine of
+# AddressSanitizer (freed memory kept poisoned, 256 MB by default) keeps the
+# meshing harnesses, which allocate much per execution, out of page faults.
+export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}" OPENBLAS_NUM_THREADS="${OPENBLAS_NUM_THREADS:-1}"
+export ASAN_OPTIONS="${ASAN_OPTIONS:-quarantine_size_mb=16}"
 exe="$build/test/Polyvector_fields/fuzz/fuzz_$target"
 [[ -x "$exe" ]] || { echo "no $exe: build it with -DPVF_BUILD_FUZZERS=ON (target pvf_fuzzers)" >&2; exit 2; }
 work="$build/fuzz-work/$target"

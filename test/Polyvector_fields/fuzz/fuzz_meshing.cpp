@@ -86,14 +86,6 @@ inline Mesh base_mesh(Bytes& in)
   return tm;
 }
 
-inline double mean_edge(const Mesh& tm)
-{
-  double sum = 0;
-  for(auto e : edges(tm))
-    sum += std::sqrt(CGAL::squared_distance(tm.point(source(e, tm)), tm.point(target(e, tm))));
-  return sum / double(num_edges(tm));
-}
-
 PVF_FUZZ_TARGET(meshing)
 {
   Bytes in{ data, size };

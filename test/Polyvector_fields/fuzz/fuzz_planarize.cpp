@@ -109,14 +109,6 @@ inline Mesh quad_mesh(std::uint8_t kind, std::uint8_t a, std::uint8_t b)
   }
 }
 
-inline double mean_edge(const Mesh& m)
-{
-  double sum = 0;
-  for(auto e : edges(m))
-    sum += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
-  return sum / double(num_edges(m));
-}
-
 inline std::vector<Point> points_of(const Mesh& m)
 {
   std::vector<Point> p;
@@ -136,18 +128,6 @@ inline bool same_points(const std::vector<Point>& a, const std::vector<Point>& b
       return false;
   }
   return true;
-}
-
-inline double distance_to_surface(const Point& p, const Mesh& tm)
-{
-  double best = std::numeric_limits<double>::infinity();
-  for(auto f : faces(tm))
-  {
-    const auto h = halfedge(f, tm);
-    const Kernel::Triangle_3 t(tm.point(source(h, tm)), tm.point(target(h, tm)), tm.point(target(next(h, tm), tm)));
-    best = (std::min)(best, CGAL::squared_distance(p, t));
-  }
-  return std::sqrt(best);
 }
 
 inline double face_planarity(Face f, const Mesh& m)

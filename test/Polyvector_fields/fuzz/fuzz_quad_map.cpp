@@ -149,14 +149,6 @@ inline Mesh base_mesh(std::uint8_t kind, std::uint8_t a, std::uint8_t b)
   return tm;
 }
 
-inline double mean_edge(const Mesh& tm)
-{
-  double sum = 0;
-  for(auto e : edges(tm))
-    sum += std::sqrt(CGAL::squared_distance(tm.point(source(e, tm)), tm.point(target(e, tm))));
-  return sum / double(num_edges(tm));
-}
-
 inline double edge_length(Edge e, const Mesh& tm)
 {
   return std::sqrt(CGAL::squared_distance(tm.point(source(e, tm)), tm.point(target(e, tm))));
@@ -177,18 +169,6 @@ inline double dihedral_degrees(Edge e, const Mesh& tm)
 
 inline bool finite(const Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
-// The distance from p to the closest triangle of tm (brute force: tm is tiny).
-inline double distance_to_surface(const Point& p, const Mesh& tm)
-{
-  double best = std::numeric_limits<double>::infinity();
-  for(auto f : faces(tm))
-  {
-    const auto h = halfedge(f, tm);
-    const Kernel::Triangle_3 t(tm.point(source(h, tm)), tm.point(target(h, tm)), tm.point(target(next(h, tm), tm)));
-    best = (std::min)(best, CGAL::squared_distance(p, t));
-  }
-  return std::sqrt(best);
-}
 
 PVF_FUZZ_TARGET(quad_map)
 {

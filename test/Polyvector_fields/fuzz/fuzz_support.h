@@ -21,6 +21,7 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/generators.h>
 
@@ -32,6 +33,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,29 @@ typedef Kernel::Vector_3 Vector;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef boost::graph_traits<Mesh>::face_descriptor Face;
 typedef boost::graph_traits<Mesh>::vertex_descriptor Vertex;
+
+// The mean edge length of a mesh.
+inline double mean_edge(const Mesh& tm)
+{
+  double sum = 0;
+  for(auto e : edges(tm))
+    sum += std::sqrt(CGAL::squared_distance(tm.point(source(e, tm)), tm.point(target(e, tm))));
+  return sum / double(num_edges(tm));
+}
+
+// The distance from p to the nearest face of tm, face by face (the meshes of
+// the harnesses have a few dozen faces).
+inline double distance_to_surface(const Point& p, const Mesh& tm)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    const Kernel::Triangle_3 t(tm.point(source(h, tm)), tm.point(target(h, tm)), tm.point(target(next(h, tm), tm)));
+    best = (std::min)(best, CGAL::squared_distance(p, t));
+  }
+  return std::sqrt(best);
+}
 
 inline std::string as_text(const std::uint8_t* data, std::size_t size)
 {

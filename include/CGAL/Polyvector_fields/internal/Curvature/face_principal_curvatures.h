@@ -120,8 +120,8 @@ Error_code estimate_face_principal_curvatures(const Bundle& bundle, const Curvat
       lo[std::size_t(k)] = vi == 0 ? x : (std::min)(lo[std::size_t(k)], x);
       hi[std::size_t(k)] = vi == 0 ? x : (std::max)(hi[std::size_t(k)], x);
     }
-  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  // (hypot: no underflow or overflow of the squares, whatever the scale of the mesh)
+  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   for(Curvature_value& value : values)
     if(std::abs(value.k1) * diagonal < flat_curvature_tolerance && std::abs(value.k2) * diagonal < flat_curvature_tolerance)
       value.k1 = value.k2 = 0;

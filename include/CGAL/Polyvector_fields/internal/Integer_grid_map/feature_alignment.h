@@ -104,7 +104,6 @@ struct Feature_alignment_report
   std::size_t dropped_edges = 0;    // of them, free: their relation had no unit coefficient
   std::size_t feature_vertices = 0; // vertices on an aligned edge
   std::size_t feature_corners = 0;  // of them, on an integer point (both coordinates)
-  std::size_t turning_corners = 0;  // of those, put there because their feature curve turns
 };
 
 // The coordinate (0: U, 1: V) that stays constant along the edge of corner c
@@ -228,7 +227,6 @@ void align_features(const CornerMesh& M, const Comb_data& D, const std::vector<c
           if(kv.first < nx && kv.second != 0)
             integer_column[kv.first] = promoted[kv.first] = 1;
       }
-      ++report.turning_corners;
     }
   }
 

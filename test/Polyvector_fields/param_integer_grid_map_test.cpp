@@ -325,6 +325,40 @@ TEST_P(IgmRuns, SeamsSingularitiesAndFlips)
 INSTANTIATE_TEST_SUITE_P(Igm, IgmRuns,
                          ::testing::Values("inspired", "inspired_conjugate", "bumpy", "eight", "fandisk", "sphere", "torus"));
 
+// Stiffening rounds keep the integers of the last rounding while that removes
+// flips: one numeric factorization per round, and a rounding only in the
+// first round and after a round that did not lower the flips (round 1
+// always keeps them). With stiffening_keeps_integers(false), every round
+// rounds. Both maps are checked maps without flips (the sphere needs
+// stiffening rounds in both).
+TEST(IgmStiffening, RoundsKeepTheIntegersUnlessAsked)
+{
+  std::unique_ptr<Case> c = make_case("sphere");
+  auto uv = c->tm.add_property_map<Halfedge, UV>("h:uv").first;
+  for(bool keep : { true, false })
+  {
+    PVF::Integer_grid_map_result r;
+    const auto np = PVF::parameters::stiffening_keeps_integers(keep);
+    ASSERT_EQ(c->h > 0 ? PVF::compute_integer_grid_map(c->tm, c->field, uv, r, PVF::parameters::target_edge_length(c->h, np))
+                       : PVF::compute_integer_grid_map(c->tm, c->field, uv, r, np),
+              PVF::Error_code::SUCCESS)
+      << keep;
+    ASSERT_GE(r.stiffening_rounds, 1u) << keep;
+    EXPECT_EQ(r.flipped_faces, 0u) << keep;
+    EXPECT_EQ(check_map(*c, uv).flips, 0u) << keep;
+    EXPECT_EQ(r.factorizations, r.stiffening_rounds + 1) << keep;
+    if(keep)
+    {
+      EXPECT_GE(r.integer_roundings, 1u);
+      EXPECT_LE(r.integer_roundings, r.stiffening_rounds);
+    }
+    else
+      EXPECT_EQ(r.integer_roundings, r.stiffening_rounds + 1);
+    std::printf("[ sphere, keep integers %d ] %zu stiffening rounds, %zu roundings, energy ratio %.4f\n", int(keep),
+                r.stiffening_rounds, r.integer_roundings, r.energy_ratio);
+  }
+}
+
 // The cut opens every component into a disk, passes through every singular
 // vertex, and the combed frames match by the identity across every other edge.
 TEST(IgmComb, CutIsADiskThroughSingularities)

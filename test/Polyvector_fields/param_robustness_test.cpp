@@ -192,6 +192,68 @@ TEST(RobustMap, StiffeningWeightsStayBoundedAndSolvable)
     EXPECT_NEAR(y_rounded[Eigen::Index(i)], std::round(y_rounded[Eigen::Index(i)]), 1e-6);  // exact once snapped
 }
 
+// Stiffening reweights a few faces per round. The system adds
+// (w - 1) B_r^T B_r to the normal equations of unit weights for those rows
+// only; here that is held to the system made from the weighted rows
+// directly, on the sphere's map with weights from 1 to 1e6 on a third of the
+// faces: the same rounded integers, and the continuous unknowns within
+// 1e-9 of the largest. A round that keeps the integers
+// (solve_for_integers()) gives the rounded minimiser again.
+TEST(RobustMap, ReweightedSystemEqualsTheWeightedRows)
+{
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  namespace I = PVF::internal;
+  Mesh tm = sphere(2);
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 5, 2, 11), field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  const Bundle bundle(tm);
+  PVF::Frame_field_comb<Bundle> comb;
+  ASSERT_EQ(comb.compute(bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
+  const auto& M = comb.corner_mesh();
+  I::Seamless_reduction R;
+  ASSERT_EQ(I::reduce_seamless_variables(M, comb.data(), R), PVF::Error_code::SUCCESS);
+  const std::size_t nx = R.continuous_columns, m = R.integer_columns;
+  ASSERT_GT(m, 0u);
+  I::Guidance_system S;
+  I::assemble_guidance(M, comb.data(), R, 0.2, nx + m, S);
+  std::vector<double> row_weight(4 * M.F, 1.0);
+  for(std::size_t f = 0; f < M.F; f += 3)
+    for(std::size_t k = 0; k < 4; ++k)
+      row_weight[4 * f + k] = std::sqrt(std::pow(10.0, double(f % 7)));  // weights 1 .. 1e6
+  Eigen::SparseMatrix<double> Bw = S.B1;
+  Eigen::VectorXd dw = S.d1;
+  for(Eigen::Index k = 0; k < Bw.outerSize(); ++k)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(Bw, k); it; ++it)
+      it.valueRef() *= row_weight[std::size_t(it.row())];
+  for(Eigen::Index r = 0; r < dw.size(); ++r)
+    dw[r] *= row_weight[std::size_t(r)];
+  const std::vector<double> unit(4 * M.F, 1.0);
+  const std::vector<I::Distinct_points> none;
+  const PVF::Default_real_sparse_solver solver;
+  PVF::Integer_grid_map_result report;
+  // first unit weights, then the stiffened ones: the second set_weights()
+  // starts again from the unit equations
+  I::Mixed_integer_system<PVF::Default_real_sparse_solver> reweighted(S.B1, S.d1, nx, m, none, solver),
+    direct(Bw, dw, nx, m, none, solver);
+  Eigen::VectorXd yc1, yr1, yc2, yr2, kept;
+  ASSERT_EQ(reweighted.set_weights(unit, report), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(reweighted.set_weights(row_weight, report), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(reweighted.round(false, yc1, yr1, report), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(direct.set_weights(unit, report), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(direct.round(false, yc2, yr2, report), PVF::Error_code::SUCCESS);
+  const double scale = yc2.cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0);
+  EXPECT_LE((yc1 - yc2).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  EXPECT_EQ(yr1.tail(Eigen::Index(m)), yr2.tail(Eigen::Index(m)));
+  EXPECT_LE((yr1 - yr2).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  ASSERT_EQ(reweighted.solve_for_integers(Eigen::VectorXd(yr1.tail(Eigen::Index(m))), kept, report),
+            PVF::Error_code::SUCCESS);
+  EXPECT_LE((kept - yr1).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  // one analysis, three numeric factorizations
+  EXPECT_EQ(report.factorizations, 3u);
+}
+
 // Two integer points that round to the same point fold every face between
 // them: the rounding takes the other integer next to the minimiser for the
 // last unknown of their difference. Here x (continuous) wants 0, and the

@@ -58,9 +58,16 @@ int run(const Options& o)
   const Constraint_set constraints = gather_constraints(o, input, size, bundle, curvature, clock);
   const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
-  const Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
+  Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
   Quad_stage quads;
-  make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+  if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, true))
+  {
+    // Fold-overs that the extraction could not repair: the map again, with
+    // the integers rounded in every stiffening round (another search).
+    param = parametrize(o, input.tm, size, constraints, field, clock, false);
+    quads = Quad_stage();
+    make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+  }
   write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
   print_summary(o, input, size, constraints, field, analysis, param, quads, outputs, clock);
   return EXIT_SUCCESS;

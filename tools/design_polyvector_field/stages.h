@@ -525,12 +525,15 @@ Analysis analyse_field(const Options& o, Mesh& tm, const Bundle& bundle, const F
 struct Parametrization
 {
   bool computed = false;
+  // computed again, rounding the integers in every stiffening round, because
+  // the extraction could not repair the fold-overs of the first map
+  bool recomputed = false;
   Mesh::Property_map<Mesh::Halfedge_index, std::array<double, 2> > uv;  // at target(h) inside face(h)
   PVF::Integer_grid_map_result result;
 };
 
 Parametrization parametrize(const Options& o, Mesh& tm, const Quad_size& size, const Constraint_set& constraints,
-                            const Field& field, Stopwatch& clock)
+                            const Field& field, Stopwatch& clock, bool stiffening_keeps_integers = true)
 {
   Parametrization p;
   if(!o.parametrize)
@@ -541,8 +544,10 @@ Parametrization parametrize(const Options& o, Mesh& tm, const Quad_size& size, c
   // features (the border among them) lie on integer iso-lines.
   const auto features = constraints.features ? *constraints.features
                                              : tm.add_property_map<Mesh::Edge_index, bool>("e:pvf_feature", false).first;
-  const auto np = PVF::parameters::singularity_cancellation_distance(
-    o.singularity_separation * h, PVF::parameters::boundary_alignment(o.boundary_alignment))
+  const auto np = PVF::parameters::stiffening_keeps_integers(
+                    stiffening_keeps_integers,
+                    PVF::parameters::singularity_cancellation_distance(
+                      o.singularity_separation * h, PVF::parameters::boundary_alignment(o.boundary_alignment)))
                     .edge_is_constrained_map(features);
   // With the mean edge length of an unrefined mesh, the map takes it itself.
   const PVF::Error_code code =
@@ -551,6 +556,7 @@ Parametrization parametrize(const Options& o, Mesh& tm, const Quad_size& size, c
       : PVF::compute_integer_grid_map(*field.polyvector, p.uv, p.result, np);
   check(code, "parametrization", code == PVF::Error_code::MAP_CHECK_FAILED ? p.result.diagnostic : std::string());
   p.computed = true;
+  p.recomputed = !stiffening_keeps_integers;
   clock.lap("parametrization");
   return p;
 }
@@ -570,13 +576,20 @@ struct Quad_stage
   double time_extraction = 0, time_planarization = 0;
 };
 
-void make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, const Parametrization& param, Quad_stage& q,
-                    Stopwatch& clock)
+// Returns false, and makes nothing, when the extraction could not repair the
+// fold-overs of a map that can be computed again (may_retry).
+bool make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, const Parametrization& param, Quad_stage& q,
+                    Stopwatch& clock, bool may_retry = false)
 {
   if(o.out_quads.empty())
-    return;
+    return true;
   const PVF::internal::Timer extraction_timer;
   const PVF::Error_code extracted = PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction);
+  if(extracted == PVF::Error_code::UNREPAIRABLE_FOLD_OVER && may_retry)
+  {
+    clock.lap("quad mesh");
+    return false;
+  }
   check(extracted, "quad mesh", q.extraction.diagnostic);
   q.time_extraction = extraction_timer.elapsed();
   auto planarity = q.quads.add_property_map<Mesh::Face_index, double>("f:pvf_planarity").first;
@@ -605,6 +618,7 @@ void make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, cons
     clock.lap("planarization");
   }
   q.computed = true;
+  return true;
 }
 
 // ---------------------------------------------------------------------------

@@ -148,10 +148,14 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
               << r.comb.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
               << " flipped faces";
     if(r.stiffening_rounds > 0)
-      std::cout << " after " << r.stiffening_rounds << " stiffening rounds";
+      std::cout << " after " << r.stiffening_rounds << " stiffening rounds (" << r.integer_roundings - 1
+                << " of them rounding the integers again)";
     std::cout << "; worst seam residual " << r.max_seam_residual << "; energy rounded/continuous " << r.energy_ratio;
     if(r.comb.clamped_faces > 0)
       std::cout << "; " << r.comb.clamped_faces << " near-degenerate frames clamped";
+    if(param.recomputed)
+      std::cout << "; computed again with the integers rounded in every stiffening round, after the quad extraction"
+                   " could not repair the fold-overs of the first map";
     if(r.feature_edges > 0)
       std::cout << "\nfeatures        " << r.aligned_feature_edges << " of " << r.feature_edges
                 << " feature edges (sharp" << (o.boundary_alignment ? " and border" : "") << ") on integer iso-lines, "

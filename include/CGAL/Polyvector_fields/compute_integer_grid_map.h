@@ -94,6 +94,7 @@ struct Integer_grid_map_result
   std::size_t flipped_faces = 0;          ///< faces with det(grad uv) <= 0 in the output
   std::vector<std::size_t> flipped_per_round;  ///< flipped faces after each stiffening round
   std::size_t stiffening_rounds = 0;      ///< solves after the first one
+  std::size_t integer_roundings = 0;      ///< solves that rounded the integer unknowns (the first, and the stiffening rounds after one that did not remove flips); the other rounds keep the integers and solve for the continuous unknowns only
   std::size_t factorizations = 0;         ///< numeric factorizations of the sparse system
   std::size_t integer_point_collisions_avoided = 0;  ///< roundings that took the other integer next to the minimiser, so that two integer points of one face (singular vertices, feature corners) did not meet (all rounds)
   double target_edge_length = 0;          ///< h used
@@ -214,6 +215,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
     result.time_assembly += internal::seconds_since(t);
     result.flipped_per_round.clear();
     result.stiffening_rounds = 0;
+    result.integer_roundings = 0;
     code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R, y, result);
     if(code != Error_code::SUCCESS)
       return code;
@@ -301,6 +303,12 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// the minimiser is taken (`integer_point_collisions_avoided`). Then faces with `det(grad uv) <= 0` and the faces around them get
 /// a larger weight and the problem is solved again, at most
 /// `number_of_iterations` times (stiffening); the round with the fewest flips is kept.
+/// A stiffening round keeps the integers of the last rounding and solves for
+/// the continuous unknowns only (the normal equations are updated on the
+/// reweighted faces, and factored again on the ordering of the first round);
+/// after a round that did not lower the number of flips, the next one rounds
+/// the integers again (`integer_roundings`). The rounds end after 8 rounds in
+/// a row without fewer flips than the best one.
 ///
 /// <b>Output.</b> `uv_map[h]` is the value at `target(h)` inside `face(h)`. The
 /// values are snapped to a dyadic grid (2^-k, about 1e-12 of a quad), so that
@@ -371,6 +379,15 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///                           given with `Polyvector_fields::parameters::rounding_by_refactorization()`}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stiffening_keeps_integers}
+///     \cgalParamDescription{whether a stiffening round keeps the integers of the last rounding as long as
+///                           that lowers the number of flipped faces (one factorization and one solve per
+///                           round), or rounds them again in every round (a Schur complement per round:
+///                           slower, and another search, to try when the first map's fold-overs cannot
+///                           be repaired); given with `Polyvector_fields::parameters::stiffening_keeps_integers()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{a model of `SparseLinearAlgebraWithFactorTraits_d` on `double`, copied for each factorization}

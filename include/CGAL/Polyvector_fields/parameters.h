@@ -98,6 +98,8 @@ CGAL_PVF_ADD_NAMED_PARAMETER(target_edge_length_t, target_edge_length, target_ed
 CGAL_PVF_ADD_NAMED_PARAMETER(stiffening_factor_t, stiffening_factor, stiffening_factor)
 // `bool`: refactor the whole system after each rounding instead of the Schur-complement update (a reference, for tests and benchmarks).
 CGAL_PVF_ADD_NAMED_PARAMETER(rounding_by_refactorization_t, rounding_by_refactorization, rounding_by_refactorization)
+// `bool`: a stiffening round keeps the integers of the last rounding while that removes flips (default `true`), or rounds them again in every round.
+CGAL_PVF_ADD_NAMED_PARAMETER(stiffening_keeps_integers_t, stiffening_keeps_integers, stiffening_keeps_integers)
 
 // Quad meshes.
 // `bool`: `extract_quad_mesh()` keeps the cells cut by the mesh boundary as trimmed polygons; default `false` (whole quads only).

@@ -42,7 +42,11 @@ class Factored_real_system
 
 public:
   explicit Factored_real_system(const SolverTraits& prototype) : m_factorization(prototype) {}
-  bool factor(const Eigen::SparseMatrix<double>& A) { return m_factorization.analyze(A) && m_factorization.factorize(A); }
+  bool factor(const Eigen::SparseMatrix<double>& A) { return analyze(A) && factorize(A); }
+  // the ordering and symbolic analysis, for every matrix of A's pattern
+  bool analyze(const Eigen::SparseMatrix<double>& A) { return m_factorization.analyze(A); }
+  // the numeric factorization of a matrix of the analysed pattern
+  bool factorize(const Eigen::SparseMatrix<double>& A) { return m_factorization.factorize(A); }
   // solves A X = B for a dense block B, all its columns at once
   bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) { return m_factorization.solve(B, X) && X.allFinite(); }
 
@@ -131,54 +135,166 @@ private:
   std::vector<std::size_t> m_free;
 };
 
-// One solve of the mixed-integer problem with face weights w:
-// minimise |W^(1/2)(B y - d)|^2, y = (x continuous, n integer), rounding so
-// that no form of `distinct` becomes zero where the other integer next to the
-// minimiser avoids it.
-template <typename SolverTraits, typename Report>
-Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eigen::VectorXd& d1,
-                               const std::vector<double>& row_weight, std::size_t nx, std::size_t m,
-                               const std::vector<Distinct_points>& distinct,
-                               const SolverTraits& prototype, bool refactor_per_rounding,
-                               Eigen::VectorXd& y_continuous, Eigen::VectorXd& y_rounded,
-                               Report& result)
+// The mixed-integer problem with row weights w: minimise
+// |W^(1/2)(B y - d)|^2, y = (x continuous, n integer). set_weights() makes
+// the normal equations for the current weights and factors the continuous
+// block; then round() rounds the integers (Schur complement and greedy
+// rounding), and solve_for_integers() gives the continuous unknowns for
+// integers already chosen (one solve, no rounding).
+//
+// The normal equations of unit weights are made once; a call of
+// set_weights() adds (w_r - 1) B_r^T B_r for the rows whose weight is not 1
+// (stiffening reweights few faces), on the same pattern: the ordering and
+// symbolic analysis of the first factorization serve every later one.
+template <typename SolverTraits>
+class Mixed_integer_system
 {
-  auto t = std::chrono::steady_clock::now();
-  Eigen::SparseMatrix<double> B = B1;
-  Eigen::VectorXd d = d1;
-  for(Eigen::Index k = 0; k < B.outerSize(); ++k)
-    for(Eigen::SparseMatrix<double>::InnerIterator it(B, k); it; ++it)
-      it.valueRef() *= row_weight[std::size_t(it.row())];
-  for(Eigen::Index r = 0; r < d.size(); ++r)
-    d[r] *= row_weight[std::size_t(r)];
-  const Eigen::SparseMatrix<double> Bx = B.leftCols(Eigen::Index(nx));
-  const Eigen::SparseMatrix<double> Bn = B.rightCols(Eigen::Index(m));
-  const Eigen::SparseMatrix<double> BxT = Bx.transpose();
-  // Eigen's pruned sparse product reads memory it does not own when a factor
-  // has no column or no row (seen on the 12-triangle box, nx = 0): the empty
-  // blocks are made directly.
-  Eigen::SparseMatrix<double> Kxx{ Eigen::Index(nx), Eigen::Index(nx) }, Kxn{ Eigen::Index(nx), Eigen::Index(m) };
-  Eigen::VectorXd bx = Eigen::VectorXd::Zero(Eigen::Index(nx));
-  if(nx > 0)
-  {
-    Kxx = (BxT * Bx).pruned();
-    bx = BxT * d;
-    if(m > 0)
-      Kxn = (BxT * Bn).pruned();  // few non-zero rows: the seams' neighbourhoods
-  }
-  Kxx.makeCompressed();
-  Kxn.makeCompressed();
-  result.time_assembly += seconds_since(t);
+  typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
 
-  t = std::chrono::steady_clock::now();
-  Factored_real_system<SolverTraits> system(prototype);
-  if(!system.factor(Kxx))
-    return Error_code::SOLVER_FAILURE;
-  ++result.factorizations;
-  result.time_factorization += seconds_since(t);
-  t = std::chrono::steady_clock::now();
+public:
+  Mixed_integer_system(const Eigen::SparseMatrix<double>& B1, const Eigen::VectorXd& d1, std::size_t nx, std::size_t m,
+                       const std::vector<Distinct_points>& distinct, const SolverTraits& prototype)
+    : m_B1(B1), m_d1(d1), m_nx(nx), m_m(m), m_distinct(distinct), m_prototype(prototype), m_system(prototype)
+  {}
+
+  // `row_weight` holds w_r^(1/2) per row of B.
+  template <typename Report>
+  Error_code set_weights(const std::vector<double>& row_weight, Report& result)
+  {
+    auto t = std::chrono::steady_clock::now();
+    if(!m_unit_made)
+      make_unit_equations();
+    m_row_weight = row_weight;
+    m_Kxx = m_Kxx1;
+    m_Kxn = m_Kxn1;
+    m_Knn = m_Knn1;
+    m_bx = m_bx1;
+    m_bn = m_bn1;
+    const std::size_t nx = m_nx;
+    for(Eigen::Index r = 0; r < m_rows.rows(); ++r)
+    {
+      const double c = row_weight[std::size_t(r)] * row_weight[std::size_t(r)] - 1;
+      if(c == 0)
+        continue;
+      for(Row_matrix::InnerIterator a(m_rows, r); a; ++a)
+      {
+        const std::size_t i = std::size_t(a.col());
+        const double ca = c * a.value();
+        if(i < nx)
+          m_bx[Eigen::Index(i)] += ca * m_d1[r];
+        else
+          m_bn[Eigen::Index(i - nx)] += ca * m_d1[r];
+        for(Row_matrix::InnerIterator b(m_rows, r); b; ++b)
+        {
+          const std::size_t j = std::size_t(b.col());
+          if(i < nx && j < nx)
+            m_Kxx.coeffRef(a.col(), b.col()) += ca * b.value();
+          else if(i < nx)
+            m_Kxn.coeffRef(a.col(), Eigen::Index(j - nx)) += ca * b.value();
+          else if(j >= nx)
+            m_Knn(Eigen::Index(i - nx), Eigen::Index(j - nx)) += ca * b.value();
+        }
+      }
+    }
+    result.time_assembly += seconds_since(t);
+
+    t = std::chrono::steady_clock::now();
+    if(!m_analyzed)
+    {
+      if(!m_system.analyze(m_Kxx))
+        return Error_code::SOLVER_FAILURE;
+      m_analyzed = true;
+    }
+    if(!m_system.factorize(m_Kxx))
+      return Error_code::SOLVER_FAILURE;
+    ++result.factorizations;
+    result.time_factorization += seconds_since(t);
+    return Error_code::SUCCESS;
+  }
+
+  // y = (Kxx^-1 (bx - Kxn n), n) for the integers n.
+  template <typename Report>
+  Error_code solve_for_integers(const Eigen::VectorXd& n, Eigen::VectorXd& y, Report& result)
+  {
+    const auto t = std::chrono::steady_clock::now();
+    Eigen::MatrixXd sol;
+    const bool ok = m_system.solve(Eigen::VectorXd(m_bx - m_Kxn * n), sol);
+    result.time_schur += seconds_since(t);
+    if(!ok)
+      return Error_code::SOLVER_FAILURE;
+    y.resize(Eigen::Index(m_nx + m_m));
+    y.head(Eigen::Index(m_nx)) = sol.col(0);
+    y.tail(Eigen::Index(m_m)) = n;
+    return Error_code::SUCCESS;
+  }
+
+  // Rounds the integers for the current weights: y_continuous is the
+  // unrounded minimiser, y_rounded the minimiser with the rounded integers.
+  // No form of `distinct` becomes zero where the other integer next to the
+  // minimiser avoids it.
+  template <typename Report>
+  Error_code round(bool refactor_per_rounding, Eigen::VectorXd& y_continuous, Eigen::VectorXd& y_rounded, Report& result);
+
+private:
+  // The normal equations of unit weights, by blocks: the products are not
+  // pruned, so that each block holds every entry that a weight can change.
+  // Eigen's sparse product reads memory it does not own when a factor has no
+  // column or no row (seen on the 12-triangle box, nx = 0): the empty blocks
+  // are made directly.
+  void make_unit_equations()
+  {
+    const Eigen::Index nx = Eigen::Index(m_nx), m = Eigen::Index(m_m);
+    m_rows = Row_matrix(m_B1);
+    const Eigen::SparseMatrix<double> Bn = m_B1.rightCols(m);
+    m_Kxx1 = Eigen::SparseMatrix<double>(nx, nx);
+    m_Kxn1 = Eigen::SparseMatrix<double>(nx, m);
+    m_bx1 = Eigen::VectorXd::Zero(nx);
+    if(nx > 0)
+    {
+      const Eigen::SparseMatrix<double> Bx = m_B1.leftCols(nx);
+      const Eigen::SparseMatrix<double> BxT = Bx.transpose();
+      m_Kxx1 = BxT * Bx;
+      m_bx1 = BxT * m_d1;
+      if(m > 0)
+        m_Kxn1 = BxT * Bn;
+    }
+    m_Kxx1.makeCompressed();
+    m_Kxn1.makeCompressed();
+    m_Knn1 = Eigen::MatrixXd::Zero(m, m);
+    m_bn1 = Eigen::VectorXd::Zero(m);
+    if(m > 0)
+    {
+      const Eigen::SparseMatrix<double> BnT = Bn.transpose();
+      m_Knn1 = Eigen::MatrixXd(Eigen::SparseMatrix<double>(BnT * Bn));
+      m_bn1 = BnT * m_d1;
+    }
+    m_unit_made = true;
+  }
+
+  const Eigen::SparseMatrix<double>& m_B1;
+  const Eigen::VectorXd& m_d1;
+  std::size_t m_nx, m_m;
+  const std::vector<Distinct_points>& m_distinct;
+  const SolverTraits& m_prototype;
+  Factored_real_system<SolverTraits> m_system;
+  bool m_unit_made = false, m_analyzed = false;
+  Row_matrix m_rows;                                  // B1 by rows
+  Eigen::SparseMatrix<double> m_Kxx1, m_Kxn1, m_Kxx, m_Kxn;
+  Eigen::MatrixXd m_Knn1, m_Knn;
+  Eigen::VectorXd m_bx1, m_bn1, m_bx, m_bn;
+  std::vector<double> m_row_weight;
+};
+
+template <typename SolverTraits>
+template <typename Report>
+Error_code Mixed_integer_system<SolverTraits>::round(bool refactor_per_rounding, Eigen::VectorXd& y_continuous,
+                                                     Eigen::VectorXd& y_rounded, Report& result)
+{
+  const std::size_t nx = m_nx, m = m_m;
+  const Eigen::SparseMatrix<double>& Kxn = m_Kxn;
+  auto t = std::chrono::steady_clock::now();
   Eigen::MatrixXd X;
-  if(!system.solve(bx, X))
+  if(!m_system.solve(m_bx, X))
     return Error_code::SOLVER_FAILURE;
   const Eigen::VectorXd x0 = X.col(0);
   y_continuous.resize(Eigen::Index(nx + m));
@@ -192,18 +308,23 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
   }
 
   // Schur complement of the integer unknowns, S n = g, with
-  // S = Knn - Kxn^T Kxx^-1 Kxn, g = bn - Kxn^T x0: block solves of 64 columns.
+  // S = Knn - Kxn^T Kxx^-1 Kxn, g = bn - Kxn^T x0: block solves of 64 columns
+  // (the right-hand sides and solutions of one block reuse their storage).
   const Eigen::SparseMatrix<double> KxnT = Kxn.transpose();
-  Eigen::MatrixXd S = Eigen::MatrixXd(Eigen::SparseMatrix<double>(Bn.transpose() * Bn));
-  const Eigen::VectorXd g = Bn.transpose() * d - KxnT * x0;
+  Eigen::MatrixXd S = m_Knn;
+  const Eigen::VectorXd g = m_bn - KxnT * x0;
   const Eigen::Index block = 64;
+  Eigen::MatrixXd R;
   for(Eigen::Index j0 = 0; j0 < Eigen::Index(m); j0 += block)
   {
     const Eigen::Index w = (std::min)(block, Eigen::Index(m) - j0);
-    const Eigen::MatrixXd R = Eigen::MatrixXd(Kxn.middleCols(j0, w));
-    if(!system.solve(R, X))
+    R.setZero(Eigen::Index(nx), w);
+    for(Eigen::Index j = 0; j < w; ++j)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(Kxn, j0 + j); it; ++it)
+        R(it.row(), j) = it.value();
+    if(!m_system.solve(R, X))
       return Error_code::SOLVER_FAILURE;
-    S.middleCols(j0, w) -= KxnT * X;
+    S.middleCols(j0, w).noalias() -= KxnT * X;
   }
   S = 0.5 * (S + S.transpose());
   result.time_schur += seconds_since(t);
@@ -215,25 +336,13 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
   Eigen::MatrixXd H = llt.solve(Eigen::MatrixXd::Identity(S.rows(), S.cols()));
   Eigen::VectorXd n = llt.solve(g);
   result.time_rounding += seconds_since(t);
-  // continuous unknowns for given integers: x = Kxx^-1 (bx - Kxn n)
-  auto continuous_part = [&](const Eigen::VectorXd& nn, Eigen::VectorXd& x) {
-    const auto t2 = std::chrono::steady_clock::now();
-    Eigen::MatrixXd sol;
-    const bool ok = system.solve(Eigen::VectorXd(bx - Kxn * nn), sol);
-    if(ok)
-      x = sol.col(0);
-    result.time_schur += seconds_since(t2);
-    return ok;
-  };
-  Eigen::VectorXd xc;
-  if(!continuous_part(n, xc))
-    return Error_code::SOLVER_FAILURE;
-  y_continuous.head(Eigen::Index(nx)) = xc;
-  y_continuous.tail(Eigen::Index(m)) = n;
+  Error_code code = solve_for_integers(n, y_continuous, result);
+  if(code != Error_code::SUCCESS)
+    return code;
   t = std::chrono::steady_clock::now();
 
   std::vector<char> free_var(m, 1);
-  Collision_guard guard(distinct, m);
+  Collision_guard guard(m_distinct, m);
   if(!refactor_per_rounding)
   {
     // Greedy rounding, the unknown closest to an integer first. Fixing n_j = v
@@ -265,76 +374,97 @@ Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eige
       free_var[j] = 0;
       guard.fix(j);
     }
+    // later updates move the fixed entries by round-off (H's rows of fixed
+    // unknowns are zero up to it): every entry is an integer up to 1e-15
+    n = n.array().round().matrix();
     result.time_rounding += seconds_since(t);
+    return solve_for_integers(n, y_rounded, result);
   }
-  else
+  // Reference: after each rounding, refactor the system of the remaining
+  // unknowns, made from the weighted rows.
+  result.time_rounding += seconds_since(t);
+  Eigen::SparseMatrix<double> B = m_B1;
+  Eigen::VectorXd d = m_d1;
+  for(Eigen::Index k = 0; k < B.outerSize(); ++k)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(B, k); it; ++it)
+      it.valueRef() *= m_row_weight[std::size_t(it.row())];
+  for(Eigen::Index r = 0; r < d.size(); ++r)
+    d[r] *= m_row_weight[std::size_t(r)];
+  const Eigen::SparseMatrix<double> Bn = B.rightCols(Eigen::Index(m));
+  Eigen::VectorXd current = n;  // free entries: current minimiser; fixed entries: their integer
+  for(std::size_t step = 0; step < m; ++step)
   {
-    // Reference: after each rounding, refactor the system of the remaining unknowns.
-    result.time_rounding += seconds_since(t);
-    Eigen::VectorXd current = n;  // free entries: current minimiser; fixed entries: their integer
-    for(std::size_t step = 0; step < m; ++step)
-    {
-      std::size_t j = m;
-      double best = 2;
-      for(std::size_t i = 0; i < m; ++i)
-        if(free_var[i])
+    std::size_t j = m;
+    double best = 2;
+    for(std::size_t i = 0; i < m; ++i)
+      if(free_var[i])
+      {
+        const double e = std::abs(current[Eigen::Index(i)] - std::round(current[Eigen::Index(i)]));
+        if(e < best)
         {
-          const double e = std::abs(current[Eigen::Index(i)] - std::round(current[Eigen::Index(i)]));
-          if(e < best)
-          {
-            best = e;
-            j = i;
-          }
+          best = e;
+          j = i;
         }
-      const double x = current[Eigen::Index(j)];
-      current[Eigen::Index(j)] = guard.choose(j, x, std::round(x), current, result.integer_point_collisions_avoided);
-      free_var[j] = 0;
-      guard.fix(j);
-      auto t1 = std::chrono::steady_clock::now();
-      std::vector<Eigen::Triplet<double> > select;
-      Eigen::VectorXd fixed_part = Eigen::VectorXd::Zero(Eigen::Index(m));
-      std::vector<std::size_t> free_list;
-      for(std::size_t i = 0; i < nx; ++i)
-        select.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.0);
-      for(std::size_t i = 0; i < m; ++i)
-        if(free_var[i])
-        {
-          select.emplace_back(Eigen::Index(nx + i), Eigen::Index(nx + free_list.size()), 1.0);
-          free_list.push_back(i);
-        }
-        else
-          fixed_part[Eigen::Index(i)] = current[Eigen::Index(i)];
-      const std::size_t columns = nx + free_list.size();
-      Eigen::SparseMatrix<double> Sel(Eigen::Index(nx + m), Eigen::Index(columns));
-      Sel.setFromTriplets(select.begin(), select.end());
-      const Eigen::SparseMatrix<double> Br = B * Sel;
-      const Eigen::VectorXd dr = d - Bn * fixed_part;
-      const Eigen::SparseMatrix<double> BrT = Br.transpose();
-      Eigen::SparseMatrix<double> Kr = (BrT * Br).pruned();
-      Eigen::MatrixXd r(Eigen::Index(columns), 1);
-      r.col(0) = BrT * dr;
-      result.time_assembly += seconds_since(t1);
-      const auto t2 = std::chrono::steady_clock::now();
-      Factored_real_system<SolverTraits> reduced(prototype);
-      Eigen::MatrixXd sol;
-      if(!reduced.factor(Kr) || !reduced.solve(r, sol))
-        return Error_code::SOLVER_FAILURE;
-      result.time_factorization += seconds_since(t2);
-      ++result.factorizations;
-      for(std::size_t k = 0; k < free_list.size(); ++k)
-        current[Eigen::Index(free_list[k])] = sol(Eigen::Index(nx + k), 0);
-      if(step + 1 == m)
-        y_rounded.head(Eigen::Index(nx)) = sol.col(0).head(Eigen::Index(nx));
-    }
-    y_rounded.tail(Eigen::Index(m)) = current;
-    return Error_code::SUCCESS;
+      }
+    const double x = current[Eigen::Index(j)];
+    current[Eigen::Index(j)] = guard.choose(j, x, std::round(x), current, result.integer_point_collisions_avoided);
+    free_var[j] = 0;
+    guard.fix(j);
+    auto t1 = std::chrono::steady_clock::now();
+    std::vector<Eigen::Triplet<double> > select;
+    Eigen::VectorXd fixed_part = Eigen::VectorXd::Zero(Eigen::Index(m));
+    std::vector<std::size_t> free_list;
+    for(std::size_t i = 0; i < nx; ++i)
+      select.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.0);
+    for(std::size_t i = 0; i < m; ++i)
+      if(free_var[i])
+      {
+        select.emplace_back(Eigen::Index(nx + i), Eigen::Index(nx + free_list.size()), 1.0);
+        free_list.push_back(i);
+      }
+      else
+        fixed_part[Eigen::Index(i)] = current[Eigen::Index(i)];
+    const std::size_t columns = nx + free_list.size();
+    Eigen::SparseMatrix<double> Sel(Eigen::Index(nx + m), Eigen::Index(columns));
+    Sel.setFromTriplets(select.begin(), select.end());
+    const Eigen::SparseMatrix<double> Br = B * Sel;
+    const Eigen::VectorXd dr = d - Bn * fixed_part;
+    const Eigen::SparseMatrix<double> BrT = Br.transpose();
+    Eigen::SparseMatrix<double> Kr = (BrT * Br).pruned();
+    Eigen::MatrixXd r(Eigen::Index(columns), 1);
+    r.col(0) = BrT * dr;
+    result.time_assembly += seconds_since(t1);
+    const auto t2 = std::chrono::steady_clock::now();
+    Factored_real_system<SolverTraits> reduced(m_prototype);
+    Eigen::MatrixXd sol;
+    if(!reduced.factor(Kr) || !reduced.solve(r, sol))
+      return Error_code::SOLVER_FAILURE;
+    result.time_factorization += seconds_since(t2);
+    ++result.factorizations;
+    for(std::size_t k = 0; k < free_list.size(); ++k)
+      current[Eigen::Index(free_list[k])] = sol(Eigen::Index(nx + k), 0);
+    if(step + 1 == m)
+      y_rounded.head(Eigen::Index(nx)) = sol.col(0).head(Eigen::Index(nx));
   }
-  Eigen::VectorXd xr;
-  if(!continuous_part(n, xr))
-    return Error_code::SOLVER_FAILURE;
-  y_rounded.head(Eigen::Index(nx)) = xr;
-  y_rounded.tail(Eigen::Index(m)) = n;
+  y_rounded.tail(Eigen::Index(m)) = current;
   return Error_code::SUCCESS;
+}
+
+// One solve of the mixed-integer problem with face weights w (one
+// Mixed_integer_system, weighted once, rounded once).
+template <typename SolverTraits, typename Report>
+Error_code solve_mixed_integer(const Eigen::SparseMatrix<double>& B1, const Eigen::VectorXd& d1,
+                               const std::vector<double>& row_weight, std::size_t nx, std::size_t m,
+                               const std::vector<Distinct_points>& distinct,
+                               const SolverTraits& prototype, bool refactor_per_rounding,
+                               Eigen::VectorXd& y_continuous, Eigen::VectorXd& y_rounded,
+                               Report& result)
+{
+  Mixed_integer_system<SolverTraits> system(B1, d1, nx, m, distinct, prototype);
+  const Error_code code = system.set_weights(row_weight, result);
+  if(code != Error_code::SUCCESS)
+    return code;
+  return system.round(refactor_per_rounding, y_continuous, y_rounded, result);
 }
 
 } // namespace internal

@@ -49,6 +49,7 @@ struct Seamless_map_parameters
   double stiffening = 1;
   std::size_t max_rounds = 20;
   bool refactor = false;
+  bool keep_integers = true;
   bool edge_length_given = false;
   double edge_length = 0;
 };
@@ -61,6 +62,7 @@ Error_code read_seamless_map_parameters(const NamedParameters& np, Seamless_map_
   p.stiffening = choose_parameter(get_parameter(np, internal_np::stiffening_factor), 1.0);
   p.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(20));
   p.refactor = choose_parameter(get_parameter(np, internal_np::rounding_by_refactorization), false);
+  p.keep_integers = choose_parameter(get_parameter(np, internal_np::stiffening_keeps_integers), true);
   if(!std::isfinite(p.stiffening))
     return Error_code::NON_FINITE_VALUE;
   if(!(p.stiffening > 0))
@@ -328,8 +330,21 @@ void stiffen(const CornerMesh& M, const Guidance_system& S, const std::vector<st
     }
 }
 
-// Rounds of solves: the first one, then stiffening while faces flip. best_y is
-// the rounded solution of the round with the fewest flips (then the lowest energy).
+// Stiffening ends when this many rounds in a row have not lowered the fewest
+// flips seen: on the corpus, a round that lowered it after 8 such rounds was
+// rare, and each round costs a factorization.
+constexpr std::size_t stiffening_patience = 8;
+
+// Rounds of solves: the first one, then stiffening while faces flip. The
+// first round rounds the integers; a stiffening round keeps the integers of
+// the last rounding and solves for the continuous unknowns only (one
+// factorization and one solve), as long as that removes flips. A round that
+// does not have fewer flips than the one before it makes the next round
+// round the integers again, with the stiffened weights (every round rounds
+// them without p.keep_integers). best_y is the
+// solution of the round with the fewest flips (then the lowest energy); the
+// rounds end without flips, after p.max_rounds stiffening rounds, or after
+// stiffening_patience rounds without fewer flips than best_y's.
 template <typename CornerMesh, typename Solver, typename Report>
 Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, std::size_t nx, std::size_t m,
                                  const Seamless_map_parameters& p, const Solver& solver_prototype,
@@ -338,22 +353,35 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
   const std::vector<Distinct_points> distinct = integer_point_pairs(M, R);
   const std::size_t F = M.F, C = 3 * F;
   std::vector<double> weight(F, 1.0), row_weight(4 * F, 1.0);
-  Eigen::VectorXd y_cont, y_round;
+  Eigen::VectorXd y_cont, y_round, integers;
   std::vector<Complex> uv;
   std::vector<char> flag;
-  std::size_t best_flips = std::numeric_limits<std::size_t>::max();
+  std::size_t best_flips = std::numeric_limits<std::size_t>::max(), last_flips = best_flips;
   double best_energy = 0;
+  std::size_t best_round = 0;
+  bool round_integers = true;
   std::vector<std::vector<std::size_t> > vertex_faces(M.V);
   for(std::size_t c = 0; c < C; ++c)
     vertex_faces[M.target[c]].push_back(CornerMesh::face(c));
+  Mixed_integer_system<Solver> system(S.B1, S.d1, nx, m, distinct, solver_prototype);
   for(std::size_t round = 0; round <= p.max_rounds; ++round)
   {
     const auto round_start = std::chrono::steady_clock::now();
     for(std::size_t f = 0; f < F; ++f)
       for(int k = 0; k < 4; ++k)
         row_weight[4 * f + std::size_t(k)] = std::sqrt(weight[f]);
-    const Error_code code = solve_mixed_integer(S.B1, S.d1, row_weight, nx, m, distinct, solver_prototype, p.refactor && round == 0,
-                                                y_cont, y_round, result);
+    Error_code code = system.set_weights(row_weight, result);
+    if(code == Error_code::SUCCESS)
+    {
+      if(round_integers)
+      {
+        code = system.round(p.refactor && round == 0, y_cont, y_round, result);
+        integers = y_round.tail(Eigen::Index(m));
+        ++result.integer_roundings;
+      }
+      else
+        code = system.solve_for_integers(integers, y_round, result);
+    }
     if(code != Error_code::SUCCESS)
       return code;
     if(round == 0)
@@ -365,6 +393,8 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
     const std::size_t flips = flipped_faces(S, uv, flag);
     const double E = guidance_energy(S, uv);
     result.flipped_per_round.push_back(flips);
+    if(flips < best_flips)
+      best_round = round;
     if(flips < best_flips || (flips == best_flips && E < best_energy))
     {
       best_flips = flips;
@@ -376,8 +406,12 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
       ++result.stiffening_rounds;
       result.time_stiffening += seconds_since(round_start);
     }
-    if(flips == 0 || round == p.max_rounds)
+    if(flips == 0 || round == p.max_rounds || round - best_round >= stiffening_patience)
       break;
+    // keeping the integers stalled: round them again (a rounding is always
+    // followed by at least one round that keeps them)
+    round_integers = !p.keep_integers || (!round_integers && round > 0 && flips >= last_flips);
+    last_flips = flips;
     stiffen(M, S, vertex_faces, uv, flag, p.stiffening, weight);
   }
   return Error_code::SUCCESS;

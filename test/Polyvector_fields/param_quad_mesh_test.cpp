@@ -1653,3 +1653,142 @@ TEST(QuadFolds, FoldedQuadIsAnError)
   EXPECT_STREQ(PVF::get_error_message(PVF::Error_code::FOLDED_QUAD),
                "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)");
 }
+
+namespace {
+
+// A tube of n x rows squares (two triangles each) around the z axis: an open cylinder
+// of circumference and height 1, or (torus) the same squares closed into a torus. Its
+// map: uv = (k / n - su, i / rows - sv) at the vertex k around and i along, so that one
+// quad of the map is the whole circumference (and the whole length of the torus), with
+// the integer point (0, 0) inside a face for shifts su, sv off the grid's steps. With
+// shifts that are exact binary fractions, the seams are exact translations by 1.
+Mesh quad_tube(std::size_t n, std::size_t rows, bool torus, double su, double sv, Quad_uv_map& uv)
+{
+  Mesh tm;
+  const std::size_t layers = torus ? rows : rows + 1;
+  std::vector<Vertex> vertex;
+  for(std::size_t i = 0; i < layers; ++i)
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const double a = 2 * pi * double(k) / double(n), b = 2 * pi * double(i) / double(rows);
+      if(torus)
+        vertex.push_back(tm.add_vertex(Point((1 + 0.3 * std::cos(b)) * std::cos(a), (1 + 0.3 * std::cos(b)) * std::sin(a),
+                                             0.3 * std::sin(b))));
+      else
+        vertex.push_back(tm.add_vertex(Point(std::cos(a) / (2 * pi), std::sin(a) / (2 * pi), double(i) / double(rows))));
+    }
+  // the corners of each face, unwrapped: (k, i) with k up to n and i up to rows
+  std::map<Face, std::map<Vertex, UV> > face_uv;
+  for(std::size_t i = 0; i < rows; ++i)
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const std::array<std::size_t, 2> p{ k, i }, q{ k + 1, i }, pp{ k, i + 1 }, qq{ k + 1, i + 1 };
+      for(const auto& t : { std::array<std::array<std::size_t, 2>, 3>{ p, q, qq }, std::array<std::array<std::size_t, 2>, 3>{ p, qq, pp } })
+      {
+        std::map<Vertex, UV> corners;
+        std::vector<Vertex> vs;
+        for(const auto& c : t)
+        {
+          const Vertex v = vertex[(c[1] % layers) * n + c[0] % n];
+          vs.push_back(v);
+          corners[v] = { double(c[0]) / double(n) - su, double(c[1]) / double(rows) - sv };
+        }
+        const Face f = tm.add_face(vs[0], vs[1], vs[2]);
+        face_uv[f] = corners;
+      }
+    }
+  uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  for(Halfedge h : halfedges(tm))
+    if(!CGAL::is_border(h, tm))
+      uv[h] = face_uv[face(h, tm)][target(h, tm)];
+  return tm;
+}
+
+std::size_t quad_border_cycles(const Mesh& qm)
+{
+  std::set<Halfedge> seen;
+  std::size_t cycles = 0;
+  for(Halfedge h : halfedges(qm))
+    if(CGAL::is_border(h, qm) && seen.insert(h).second)
+    {
+      ++cycles;
+      for(Halfedge g = next(h, qm); g != h; g = next(g, qm))
+        seen.insert(g);
+    }
+  return cycles;
+}
+
+} // namespace
+
+// On an open cylinder one quad of the map around (FOUND_BUGS.md of the fuzz
+// harnesses, quad_map target), the trimmed cells go around the cylinder: the
+// iso-line v = 0 closes on itself through the one integer point, and u = 0 runs
+// from border to border, so that the cells above and below pass twice through
+// its ends. keep_trimmed_boundary cuts each of them into two polygons (two points
+// added inside the closed iso-line): a valid cylinder of 4 polygons on the surface.
+// Whole cells: none (NO_INTEGER_CELL).
+TEST(QuadWrappingCells, TrimmedCylinderCellsAreCut)
+{
+  for(std::size_t n : { std::size_t(5), std::size_t(6), std::size_t(9) })
+  {
+    SCOPED_TRACE("n = " + std::to_string(n));
+    Quad_uv_map uv;
+    const Mesh tm = quad_tube(n, 2, false, 0.3125, 0.375, uv);
+    ASSERT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+    ASSERT_EQ(euler_characteristic(tm), 0);
+    Mesh qm;
+    PVF::Quad_extraction_result r;
+    ASSERT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r, PVF::parameters::keep_trimmed_boundary(true)), PVF::Error_code::SUCCESS)
+      << r.diagnostic;
+    EXPECT_EQ(r.flipped_faces, 0u);
+    EXPECT_EQ(r.integer_points, 1u);
+    EXPECT_EQ(r.singular_points, 0u);
+    EXPECT_EQ(r.inconsistencies, 0u);
+    EXPECT_EQ(r.split_cells, 2u);
+    EXPECT_EQ(r.added_vertices, 2u);
+    EXPECT_EQ(r.quads, 0u);
+    EXPECT_EQ(r.trimmed_polygons, 4u);
+    ASSERT_TRUE(CGAL::is_valid_polygon_mesh(qm));
+    EXPECT_EQ(num_faces(qm), 4u);
+    EXPECT_EQ(r.faces, 4u);
+    // the integer point, the two added points, the two ends of u = 0 on the border, the 2 n border vertices
+    EXPECT_EQ(num_vertices(qm), 2 * n + 5);
+    EXPECT_EQ(euler_characteristic(qm), 0);
+    EXPECT_EQ(quad_border_cycles(qm), 2u);
+    for(Face f : faces(qm))
+    {
+      std::set<Vertex> corners;
+      for(Halfedge h : CGAL::halfedges_around_face(halfedge(f, qm), qm))
+        corners.insert(target(h, qm));
+      EXPECT_GE(corners.size(), 3u);
+      EXPECT_EQ(corners.size(), degree(f, qm));
+    }
+    EXPECT_LE(quad_max_distance_to(tm, qm), 1e-12);
+
+    Mesh whole;
+    PVF::Quad_extraction_result rw;
+    EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, whole, rw), PVF::Error_code::NO_INTEGER_CELL);
+    EXPECT_EQ(num_faces(whole), 0u);
+  }
+}
+
+// On a torus one quad of the map in both directions, the one whole cell passes four
+// times through the integer point: NON_DISK_CELL (the quad size is larger than the
+// torus), never a mesh that is not valid, and the output left untouched.
+TEST(QuadWrappingCells, OneCellTorusIsRefusedAsWholeCells)
+{
+  Quad_uv_map uv;
+  const Mesh tm = quad_tube(8, 6, true, 0.3125, 0.375, uv);
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+  ASSERT_TRUE(CGAL::is_closed(tm));
+  Mesh qm = grid(1, 2);
+  PVF::Quad_extraction_result r;
+  EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r), PVF::Error_code::NON_DISK_CELL);
+  EXPECT_EQ(r.integer_points, 1u);
+  EXPECT_EQ(r.inconsistencies, 0u);
+  EXPECT_NE(r.diagnostic.find("the quad size is larger than that part of the surface"), std::string::npos) << r.diagnostic;
+  EXPECT_EQ(num_faces(qm), 4u);  // untouched
+  EXPECT_STREQ(PVF::get_error_message(PVF::Error_code::NON_DISK_CELL),
+               "the quad size is larger than a part of the surface: a cell of the map goes around a hole or a handle, or "
+               "passes twice through a point, so it is not a polygon of the quad mesh");
+}

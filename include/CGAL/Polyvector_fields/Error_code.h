@@ -52,7 +52,8 @@ enum class Error_code
   MAP_CHECK_FAILED,              ///< a computed integer-grid map failed the check made before it is returned: a seam not exact under its transition, a singular vertex off the integer grid, or transitions that do not compose to the identity around a regular vertex
   NO_INTEGER_CELL,               ///< a connected component of the surface has no whole cell of the integer-grid map: the quad size is larger than that part of the surface
   TOO_FAR_FROM_SURFACE,          ///< a moved vertex ended farther from the reference surface than the allowed distance (`planarize_quad_mesh()`'s `max_distance_to_surface`)
-  FOLDED_QUAD                    ///< a quad extracted from an integer-grid map is folded against the surface: neither of its diagonals splits it into two triangles that face the side of the input faces under it
+  FOLDED_QUAD,                   ///< a quad extracted from an integer-grid map is folded against the surface: neither of its diagonals splits it into two triangles that face the side of the input faces under it
+  NON_DISK_CELL                  ///< a cell of an integer-grid map is not a disk: it goes around a hole or a handle of the surface, or passes twice through a point, and cannot be made into polygons of a mesh: the quad size is larger than that part of the surface
 };
 
 /// \ingroup PkgPolyvectorFieldsEnums
@@ -95,6 +96,7 @@ inline const char* get_error_message(Error_code code)
     case Error_code::NO_INTEGER_CELL: return "the quad size is larger than the surface: a connected component has no whole integer cell, so no quad";
     case Error_code::TOO_FAR_FROM_SURFACE: return "a vertex moved farther from the reference surface than the allowed distance (max_distance_to_surface)";
     case Error_code::FOLDED_QUAD: return "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)";
+    case Error_code::NON_DISK_CELL: return "the quad size is larger than a part of the surface: a cell of the map goes around a hole or a handle, or passes twice through a point, so it is not a polygon of the quad mesh";
   }
   return "unknown error";
 }

@@ -65,6 +65,8 @@ struct Quad_extraction_result
   std::size_t unfolded_quads = 0;         ///< folded quads repaired by moving their corners on the surface
   std::size_t moved_quad_vertices = 0;    ///< quad vertices the repair moved (off their integer points, onto input vertices or edge midpoints)
   std::size_t split_vertices = 0;         ///< vertices duplicated because their kept faces formed several fans
+  std::size_t split_cells = 0;            ///< trimmed cells (with `keep_trimmed_boundary`) that went around the surface or passed twice through a point, cut into simple polygons (counted in `trimmed_polygons` by their pieces)
+  std::size_t added_vertices = 0;         ///< vertices added inside iso-line segments of split cells that closed on themselves or joined the same two points as another one
   std::size_t irregular_vertices = 0;     ///< interior output vertices of valence != 4
   std::size_t components = 0;             ///< connected components of the input mesh (through its edges)
   std::size_t components_without_cells = 0;  ///< of which components where the map has no whole integer cell (`NO_INTEGER_CELL`)
@@ -109,7 +111,14 @@ struct Quad_extraction_result
 ///
 /// <b>Boundary.</b> By default only whole cells are kept (all quads). With
 /// `keep_trimmed_boundary(true)`, the cells cut by the boundary become polygons
-/// bounded by the iso-lines and by the mesh boundary (through its vertices).
+/// bounded by the iso-lines and by the mesh boundary (through its vertices). Where
+/// the quads are as large as a part of the surface (a cylinder whose circumference
+/// is about one quad), such a cell can go around the surface or pass twice through
+/// a point: it is then cut into simple polygons, by diagonals between its corners
+/// and, where an iso-line closes on itself or joins the same two points as another
+/// one, by vertices added inside that iso-line (`result.split_cells`,
+/// `result.added_vertices`). The polygons are checked to form a polygon mesh with
+/// the Euler characteristic of `tm`.
 ///
 /// <b>Fold-overs.</b> Triangles with `det <= 0` are repaired before extraction:
 /// they and up to `fold_over_repair_rings` rings around them are re-embedded
@@ -183,8 +192,10 @@ struct Quad_extraction_result
 ///          component of `tm` gets no face, the quad size of the map being larger than that part of the
 ///          surface (`result.diagnostic` names the first such component; never an empty or partial quad
 ///          mesh); `FOLDED_QUAD` if a quad is still folded against the surface after the repair (see <b>Folded
-///          quads</b>), their number in `result.folded_quads`. `quad_mesh` is written only on success; `tm` is
-///          never changed.
+///          quads</b>), their number in `result.folded_quads`; `NON_DISK_CELL` if a cell goes around a hole or
+///          a handle of the surface or passes twice through a point and cannot be cut into polygons (always so
+///          for whole cells, which must stay quads), the quad size being larger than that part of the surface.
+///          `quad_mesh` is written only on success; `tm` is never changed.
 ///
 /// \sa `compute_integer_grid_map()`, `quad_planarity()`, `planarize_quad_mesh()`, `IO::write_quad_mesh_VTK()`
 template <typename TriangleMesh, typename UVMap, typename PolygonMesh,

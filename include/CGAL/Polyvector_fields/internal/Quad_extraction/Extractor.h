@@ -392,16 +392,17 @@ public:
     }
   }
 
-  // Follows the iso-line from the slot's point to q = start + axis(d), through the
-  // triangles and across the edges by the exact transitions. Only exact tests:
-  // comparisons of uv coordinates with integers and orientation predicates.
-  Trace_end trace(const Slot& s) const
+  // Follows the iso-line from the slot's point to q = start + length axis(d), through
+  // the triangles and across the edges by the exact transitions. Only exact tests:
+  // comparisons of uv coordinates with integers and orientation predicates. A length
+  // below 1 finds a point inside an iso-line segment (see split_wrapping_cells.h).
+  Trace_end trace(const Slot& s, double length = 1) const
   {
     Trace_end out;
     std::size_t f = s.face;
     int d = s.dir;
     const P2 a = axis(d);
-    P2 q{ s.start[0] + a[0], s.start[1] + a[1] };
+    P2 q{ s.start[0] + length * a[0], s.start[1] + length * a[1] };
     for(std::size_t step = 0; step < 100000; ++step)
     {
       ++out.crossings;

@@ -17,6 +17,7 @@
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Extractor.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_check.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/split_wrapping_cells.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Exact_rational.h>
@@ -27,6 +28,8 @@
 #include <array>
 #include <algorithm>
 #include <cstddef>
+#include <set>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -202,6 +205,26 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
     }
     return Out_point(x[0], x[1], x[2]);
   };
+  // the point of uv q in the closed triangle f (in its chart), by its barycentric coordinates
+  auto in_face = [&](std::size_t f, const P2& q) {
+    Q U[3][2];
+    for(std::size_t k = 0; k < 3; ++k)
+      for(int c = 0; c < 2; ++c)
+        U[k][c] = Q(M.corner_uv(f, k)[c]);
+    const Q qx(q[0]), qy(q[1]);
+    auto det = [](const Q& ax, const Q& ay, const Q& bx, const Q& by, const Q& cx, const Q& cy) -> Q {
+      return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+    };
+    const Q area = det(U[0][0], U[0][1], U[1][0], U[1][1], U[2][0], U[2][1]);
+    Q w[3];
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      w[k] = det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area;
+    }
+    const std::array<double, 3> PP[3] = { M.point[M.vertex[3 * f]], M.point[M.vertex[3 * f + 1]], M.point[M.vertex[3 * f + 2]] };
+    return lerp3(PP, w, 3);
+  };
   std::vector<Out_point> positions;
   positions.reserve(out_point.size());
   for(std::size_t p : out_point)
@@ -236,26 +259,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       positions.push_back(lerp3(PP, w, 2));
     }
     else
-    {
-      const std::size_t f = P.elem;
-      Q U[3][2];
-      for(std::size_t k = 0; k < 3; ++k)
-        for(int c = 0; c < 2; ++c)
-          U[k][c] = Q(M.corner_uv(f, k)[c]);
-      const Q qx(P.uv[0]), qy(P.uv[1]);
-      auto det = [](const Q& ax, const Q& ay, const Q& bx, const Q& by, const Q& cx, const Q& cy) -> Q {
-        return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-      };
-      const Q area = det(U[0][0], U[0][1], U[1][0], U[1][1], U[2][0], U[2][1]);
-      Q w[3];
-      for(std::size_t k = 0; k < 3; ++k)
-      {
-        const std::size_t k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        w[k] = det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area;
-      }
-      const std::array<double, 3> PP[3] = { M.point[M.vertex[3 * f]], M.point[M.vertex[3 * f + 1]], M.point[M.vertex[3 * f + 2]] };
-      positions.push_back(lerp3(PP, w, 3));
-    }
+      positions.push_back(in_face(P.elem, P.uv));
   }
   // Every connected component of the surface must get cells: one without is
   // smaller than a quad at the map's scale (or its map has no integer cell).
@@ -322,11 +326,48 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
     for(std::size_t s : C.cells[f])
       poly.push_back(corner_vertex_of_slot[s]);
     polygons.push_back(poly);
-    if(poly.size() == 4 && !C.has_boundary_piece[f])
+  }
+  // Trimmed cells that go around the surface (split_wrapping_cells.h): points inside
+  // the iso-lines that would be loops or double edges, then diagonals; `changed`
+  // cells are replaced by their pieces once the quads are checked.
+  std::vector<char> changed(C.cells.size(), 0);
+  std::vector<std::vector<std::size_t> > pieces;
+  bool simple = true;
+  if(X.trimmed_)
+  {
+    std::vector<Inner_point> inner;
+    const std::size_t failed = subdivide_wrapping_segments(M, X, C.cells, ends, positions.size(), polygons, inner, changed);
+    for(const Inner_point& p : inner)
+      positions.push_back(in_face(p.face, p.uv));
+    std::set<std::pair<std::size_t, std::size_t> > edges;
+    for(const std::vector<std::size_t>& poly : polygons)
+      for(std::size_t k = 0; k < poly.size(); ++k)
+      {
+        const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
+        edges.insert(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+      }
+    std::vector<std::array<double, 3> > at(positions.size());
+    for(std::size_t v = 0; v < positions.size(); ++v)
+      at[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      if(changed[f] || has_repeated_vertex(polygons[f]))
+      {
+        changed[f] = 1;
+        simple = split_at_repeated_vertices(polygons[f], at, edges, pieces) && simple;
+      }
+    simple = simple && failed == 0;
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      result.split_cells += changed[f];
+    result.added_vertices = inner.size();
+  }
+  for(std::size_t f = 0; f < C.cells.size(); ++f)
+    if(changed[f])
+      continue;
+    else if(polygons[f].size() == 4 && !C.has_boundary_piece[f])
       ++result.quads;
     else
       ++result.trimmed_polygons;
-  }
+  result.trimmed_polygons += pieces.size();
   // Every quad is checked against the input faces under it (the faces its sides were
   // traced through, and the face nearest to its centroid); the folded ones are repaired
   // by moving their corners on the surface, or the extraction fails.
@@ -334,7 +375,8 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
     std::vector<std::vector<std::size_t> > quads(C.cells.size()), under(C.cells.size());
     for(std::size_t f = 0; f < C.cells.size(); ++f)
     {
-      if(polygons[f].size() != 4 || C.has_boundary_piece[f])
+      // (a cell that passes twice through a vertex is refused below: NON_DISK_CELL)
+      if(polygons[f].size() != 4 || C.has_boundary_piece[f] || changed[f] || has_repeated_vertex(polygons[f]))
         continue;
       quads[f] = polygons[f];
       for(std::size_t s : C.cells[f])
@@ -372,11 +414,91 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
          pos[v][2] != CGAL::to_double(positions[v].z()))
         positions[v] = Out_point(pos[v][0], pos[v][1], pos[v][2]);
   }
+  {
+    std::size_t kept = 0;
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      if(!changed[f])
+        polygons[kept++].swap(polygons[f]);
+    polygons.resize(kept);
+    polygons.insert(polygons.end(), pieces.begin(), pieces.end());
+  }
+  // A cell that meets itself or goes around the surface is not a polygon: the
+  // quads are too large for that part of the surface.
+  std::size_t self_meeting = 0, first_self_meeting = npos;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    if(has_repeated_vertex(polygons[f]))
+    {
+      ++self_meeting;
+      if(first_self_meeting == npos)
+        first_self_meeting = f;
+    }
+  auto centre_of = [&](const std::vector<std::size_t>& poly) {
+    double c[3] = { 0, 0, 0 };
+    for(std::size_t v : poly)
+    {
+      c[0] += CGAL::to_double(positions[v].x()) / double(poly.size());
+      c[1] += CGAL::to_double(positions[v].y()) / double(poly.size());
+      c[2] += CGAL::to_double(positions[v].z()) / double(poly.size());
+    }
+    return "near (" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + ")";
+  };
+  if(self_meeting != 0)
+  {
+    result.diagnostic = std::to_string(self_meeting) + (self_meeting == 1 ? " cell" : " cells") +
+                        " of the map pass twice through a point, the first one " + centre_of(polygons[first_self_meeting]) +
+                        (X.trimmed_ ? ", and could not be cut into simple polygons" : "") +
+                        ": the quad size is larger than that part of the surface";
+    return Error_code::NON_DISK_CELL;
+  }
+  if(!simple)
+  {
+    result.diagnostic = "an iso-line closes on itself or joins the same two points as another iso-line or the border, "
+                        "and could not be cut: the quad size is larger than that part of the surface";
+    return Error_code::NON_DISK_CELL;
+  }
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
   {
     ++result.inconsistencies;
     result.diagnostic = "the cells do not form a polygon mesh";
     return Error_code::NOT_AN_INTEGER_GRID_MAP;
+  }
+  if(X.trimmed_)
+  {
+    // The trimmed cells cover the surface: the polygons have its Euler characteristic
+    // unless a cell is not a disk (an annulus around a cylinder, around a handle).
+    std::set<std::pair<std::size_t, std::size_t> > edges;
+    std::set<std::size_t> used;
+    for(const std::vector<std::size_t>& poly : polygons)
+      for(std::size_t k = 0; k < poly.size(); ++k)
+      {
+        const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
+        edges.insert(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+        used.insert(a);
+      }
+    std::set<std::size_t> surface_vertices(M.vertex.begin(), M.vertex.end());
+    std::size_t surface_edges = 0;
+    for(std::size_t e = 0; e < 3 * M.F; ++e)
+      surface_edges += (M.opp[e] == npos || e < M.opp[e]) ? 1 : 0;
+    const long long chi_cells = (long long)(used.size()) - (long long)(edges.size()) + (long long)(polygons.size());
+    const long long chi_surface = (long long)(surface_vertices.size()) - (long long)(surface_edges) + (long long)(M.F);
+    if(chi_cells != chi_surface)
+    {
+      // a border loop that no iso-line reaches is the inner border of an annulus
+      std::size_t lone_loops = 0;
+      for(const std::vector<std::size_t>& cell : C.cells)
+      {
+        bool border_only = true;
+        for(std::size_t s : cell)
+          border_only = border_only && X.slots[s].dir < 0;
+        lone_loops += border_only ? 1 : 0;
+      }
+      result.diagnostic = "the cells have Euler characteristic " + std::to_string(chi_cells) + ", the surface " +
+                          std::to_string(chi_surface) + " (" + std::to_string(lone_loops) +
+                          " border loops that no iso-line reaches)" +
+                          ": a cell goes around a hole or a handle of the surface (it is not a disk), the quad size is "
+                          "larger than that part of the surface";
+      return Error_code::NON_DISK_CELL;
+    }
   }
   clear_output(quad_mesh);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(positions, polygons, quad_mesh, CGAL::parameters::default_values(), np_out);

@@ -359,6 +359,43 @@ TEST(IgmStiffening, RoundsKeepTheIntegersUnlessAsked)
   }
 }
 
+// A triangle whose two edges are on the border and run along the same field
+// direction (an ear: its tip has no other face) cannot have both of them on
+// integer iso-lines: they share the tip, so its three corners would be on
+// one iso-line, and the triangle would have no area. The shorter one is left
+// free; the map is checked, without flips, and the ear keeps a positive area
+// in uv. The ear's edges make 5.7 degrees with u.
+TEST(IgmFeatures, BorderEarIsNotFlattened)
+{
+  Mesh tm;
+  const Vertex a = tm.add_vertex(Point(0, 0, 0)), b = tm.add_vertex(Point(2, 0, 0)), c = tm.add_vertex(Point(4, 0, 0)),
+               d = tm.add_vertex(Point(0, 2, 0)), e = tm.add_vertex(Point(2, 2, 0)), f = tm.add_vertex(Point(4, 2, 0)),
+               tip = tm.add_vertex(Point(1, -0.1, 0));
+  tm.add_face(a, b, e);
+  tm.add_face(a, e, d);
+  tm.add_face(b, c, f);
+  tm.add_face(b, f, e);
+  const Face ear = tm.add_face(a, tip, b);
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+  constant_field(tm, Vector(1, 0, 0), Vector(0, 1, 0), field);
+  auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  PVF::Integer_grid_map_result r;
+  ASSERT_EQ(PVF::compute_integer_grid_map(tm, field, uv, r,
+                                          PVF::parameters::target_edge_length(0.5, PVF::parameters::boundary_alignment(true))),
+            PVF::Error_code::SUCCESS)
+    << r.diagnostic;
+  EXPECT_EQ(r.feature_edges, 7u);
+  EXPECT_EQ(r.flattening_feature_edges, 1u);
+  EXPECT_EQ(r.aligned_feature_edges, 6u);
+  EXPECT_EQ(r.flipped_faces, 0u);
+  std::vector<UV> p;
+  for(Halfedge h : CGAL::halfedges_around_face(halfedge(ear, tm), tm))
+    p.push_back(uv[h]);
+  const double area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+  EXPECT_GT(area2, 0) << "the ear is flat or flipped in the map";
+}
+
 // The cut opens every component into a disk, passes through every singular
 // vertex, and the combed frames match by the identity across every other edge.
 TEST(IgmComb, CutIsADiskThroughSingularities)

@@ -164,6 +164,10 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                 << (r.released_feature_edges
                       ? ", " + std::to_string(r.released_feature_edges) + " left free because faces beside them folded"
                       : std::string())
+                << (r.flattening_feature_edges
+                      ? ", " + std::to_string(r.flattening_feature_edges) +
+                          " left free because another feature edge of their triangle is on the same iso-line"
+                      : std::string())
                 << (r.dropped_feature_edges ? ", " + std::to_string(r.dropped_feature_edges) + " with no integer solution"
                                             : std::string());
     const auto old_flags = std::cout.flags();

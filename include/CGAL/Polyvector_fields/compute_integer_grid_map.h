@@ -88,6 +88,7 @@ struct Integer_grid_map_result
   std::size_t aligned_feature_edges = 0;  ///< of them, on an integer iso-line of the map (exactly)
   std::size_t unaligned_feature_edges = 0;///< of them, left free because the field does not run along them (within `max_feature_angle`)
   std::size_t dropped_feature_edges = 0;  ///< of them, left free because their relation could not be eliminated over the integers (expected 0)
+  std::size_t flattening_feature_edges = 0;  ///< of them, left free because another feature edge of one of their faces keeps the same coordinate: on one iso-line, the two would flatten the face (see <b>Features</b>)
   std::size_t released_feature_edges = 0; ///< of them, left free because faces around them stayed flipped with them aligned (see <b>Features</b>)
   std::size_t feature_vertices = 0;       ///< vertices on an aligned feature edge
   std::size_t feature_corners = 0;        ///< of them, regular vertices put on an integer point: the field follows two feature curves there, or one that turns (see Features)
@@ -199,6 +200,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
       result.aligned_feature_edges = features.aligned_edges;
       result.unaligned_feature_edges = features.unaligned_edges;
       result.dropped_feature_edges = features.dropped_edges;
+      result.flattening_feature_edges = features.flattening_edges;
       result.feature_vertices = features.feature_vertices;
       result.feature_corners = features.feature_corners;
       if(attempt == 0)
@@ -285,7 +287,11 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// free and counted (`unaligned_feature_edges`): where feature curves meet
 /// at an angle that the frame does not have (two creases at 30 degrees, say,
 /// with an orthogonal frame), only the curve that the field follows is on an
-/// iso-line. Design the field with the features as constraints first, so
+/// iso-line. Two feature edges of one triangle along the same field direction
+/// (an ear of the border, or a triangle across a crease that the field follows
+/// on both sides) would put its three corners on one iso-line, and the
+/// triangle would have no area in the map: the shorter of the two is left
+/// free (`flattening_feature_edges`). Design the field with the features as constraints first, so
 /// that it follows them. Features closer to each other than about half a quad
 /// are put on the same or neighbouring iso-lines, which fold the faces
 /// between them: when faces stay flipped after the stiffening, the feature

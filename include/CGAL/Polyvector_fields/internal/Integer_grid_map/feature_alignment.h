@@ -102,6 +102,7 @@ struct Feature_alignment_report
   std::size_t aligned_edges = 0;    // of them, on an integer iso-line in the map
   std::size_t unaligned_edges = 0;  // of them, free: the field does not run along them
   std::size_t dropped_edges = 0;    // of them, free: their relation had no unit coefficient
+  std::size_t flattening_edges = 0; // of them, free: with another feature edge of a face on one iso-line, they would flatten it
   std::size_t feature_vertices = 0; // vertices on an aligned edge
   std::size_t feature_corners = 0;  // of them, on an integer point (both coordinates)
 };
@@ -157,6 +158,28 @@ void align_features(const CornerMesh& M, const Comb_data& D, const std::vector<c
     }
     R.feature_coordinate[c] = static_cast<signed char>(constant_coordinate(M, D, c, max_angle));
   }
+
+  // 1b. Two feature edges of one face that keep the same coordinate meet at
+  //     a vertex, so they lie on one iso-line, and the face's three corners
+  //     with them: the face would have no area in the map (an ear of the
+  //     border, or a triangle across a crease that the field follows on
+  //     both sides). The shorter of the two is left free, on both of its
+  //     sides (marked -3, counted apart).
+  for(std::size_t f = 0; f < M.F; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+      for(std::size_t l = k + 1; l < 3; ++l)
+      {
+        const std::size_t a = 3 * f + k, b = 3 * f + l;
+        const int ja = R.feature_coordinate[a], jb = R.feature_coordinate[b];
+        if(ja < 0 || ja != jb)
+          continue;
+        const double la = std::abs(M.local_point(a) - M.local_point(CornerMesh::prev(a))),
+                     lb = std::abs(M.local_point(b) - M.local_point(CornerMesh::prev(b)));
+        const std::size_t freed = la < lb ? a : b;
+        R.feature_coordinate[freed] = -3;
+        if(M.opposite[freed] != npos)
+          R.feature_coordinate[M.opposite[freed]] = -3;
+      }
 
   // The coordinate j of corner k as a form over the columns.
   auto coordinate_form = [&R](std::size_t k, int j, long long sign, Form& out) {
@@ -352,6 +375,8 @@ void align_features(const CornerMesh& M, const Comb_data& D, const std::vector<c
     }
     else if(a == -2 || b == -2)
       ++report.dropped_edges;
+    else if(a == -3 || b == -3)
+      ++report.flattening_edges;
     else
       ++report.unaligned_edges;
   }

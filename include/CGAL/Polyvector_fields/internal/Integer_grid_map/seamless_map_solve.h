@@ -240,8 +240,9 @@ std::size_t release_features_near_flips(const CornerMesh& M, const Seamless_redu
 
 // The pairs of corners of one face whose vertices are both integer points
 // (singular vertices, feature corners, the pinned vertex: no continuous
-// column in their terms), as forms over the integer unknowns (column - nx):
-// the rounding keeps them apart (mixed_integer_solve.h).
+// column in their terms), and the faces whose third vertex would fall on the
+// iso-line of their aligned feature edge, as forms over the integer unknowns
+// (column - nx): the rounding keeps them apart (mixed_integer_solve.h).
 template <typename CornerMesh>
 std::vector<Distinct_points> integer_point_pairs(const CornerMesh& M, const Seamless_reduction& R)
 {
@@ -286,6 +287,51 @@ std::vector<Distinct_points> integer_point_pairs(const CornerMesh& M, const Seam
       if(!form.terms.empty())
         pairs.push_back(std::move(form));
     }
+  // A face with an aligned feature edge, whose third vertex is integer in the
+  // coordinate j that the edge keeps (a singular vertex, a feature corner, a
+  // vertex of a feature curve along the same direction): on the edge's
+  // iso-line, it would flatten the face. The difference of that coordinate
+  // is an integer form (in the u slot, v = 0).
+  auto integer_in = [&](std::size_t c, int j) {
+    for(const Corner_term& t : R.corner_terms[c])
+      if(t.column < nx && (j == 0 ? t.u : t.v) != 0)
+        return false;
+    return true;
+  };
+  std::set<std::array<std::size_t, 3> > seen_lines;
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+  {
+    const int j = R.feature_coordinate.empty() ? -1 : R.feature_coordinate[c];
+    if(j < 0)
+      continue;
+    const std::size_t third = CornerMesh::next(c);
+    if(!integer_in(third, j) || !integer_in(c, j))
+      continue;
+    if(!seen_lines.insert({ M.target[third], M.target[c], std::size_t(j) }).second)
+      continue;
+    Distinct_points form;
+    auto add = [&](const Corner_term& t, long long sign) {
+      const long long a = sign * std::llround(j == 0 ? t.u : t.v);
+      if(a == 0)
+        return;
+      for(auto& x : form.terms)
+        if(x.unknown == t.column - nx)
+        {
+          x.u += a;
+          return;
+        }
+      form.terms.push_back({ t.column - nx, a, 0 });
+    };
+    for(const Corner_term& t : R.corner_terms[third])
+      add(t, 1);
+    for(const Corner_term& t : R.corner_terms[c])
+      add(t, -1);
+    form.terms.erase(std::remove_if(form.terms.begin(), form.terms.end(),
+                                    [](const Distinct_points::Term& t) { return t.u == 0 && t.v == 0; }),
+                     form.terms.end());
+    if(!form.terms.empty())
+      pairs.push_back(std::move(form));
+  }
   return pairs;
 }
 

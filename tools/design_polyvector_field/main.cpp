@@ -60,10 +60,12 @@ int run(const Options& o)
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
   Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
   Quad_stage quads;
-  if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, true))
+  // A map without flipped faces whose extraction still finds fold-overs it
+  // cannot repair (degenerate triangles): the map again, with the integers
+  // rounded in every stiffening round (another search). A map with flipped
+  // faces had that search already (compute_integer_grid_map()).
+  if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, param.result.flipped_faces == 0))
   {
-    // Fold-overs that the extraction could not repair: the map again, with
-    // the integers rounded in every stiffening round (another search).
     param = parametrize(o, input.tm, size, constraints, field, clock, false);
     quads = Quad_stage();
     make_quad_mesh(o, input.tm, bundle, param, quads, clock);

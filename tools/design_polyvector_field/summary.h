@@ -155,7 +155,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
       std::cout << "; " << r.comb.clamped_faces << " near-degenerate frames clamped";
     if(param.recomputed)
       std::cout << "; computed again with the integers rounded in every stiffening round, after the quad extraction"
-                   " could not repair the fold-overs of the first map";
+                   " could not repair the degenerate faces of the first map";
     if(r.feature_edges > 0)
       std::cout << "\nfeatures        " << r.aligned_feature_edges << " of " << r.feature_edges
                 << " feature edges (sharp" << (o.boundary_alignment ? " and border" : "") << ") on integer iso-lines, "

@@ -314,7 +314,9 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// reweighted faces, and factored again on the ordering of the first round);
 /// after a round that did not lower the number of flips, the next one rounds
 /// the integers again (`integer_roundings`). The rounds end after 8 rounds in
-/// a row without fewer flips than the best one.
+/// a row without fewer flips than the best one. When faces still flip, the
+/// rounds start again from unit weights and round the integers in every round
+/// (a wider search, slower), and the best round of both is kept.
 ///
 /// <b>Output.</b> `uv_map[h]` is the value at `target(h)` inside `face(h)`. The
 /// values are snapped to a dyadic grid (2^-k, about 1e-12 of a quad), so that
@@ -387,11 +389,12 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{stiffening_keeps_integers}
-///     \cgalParamDescription{whether a stiffening round keeps the integers of the last rounding as long as
-///                           that lowers the number of flipped faces (one factorization and one solve per
-///                           round), or rounds them again in every round (a Schur complement per round:
-///                           slower, and another search, to try when the first map's fold-overs cannot
-///                           be repaired); given with `Polyvector_fields::parameters::stiffening_keeps_integers()`}
+///     \cgalParamDescription{whether the stiffening rounds first keep the integers of the last rounding as
+///                           long as that lowers the number of flipped faces (one factorization and one solve
+///                           per round), and round them in every round only when faces still flip after
+///                           that; or round them in every round from the start (a Schur complement per
+///                           round: slower, another search); given with
+///                           `Polyvector_fields::parameters::stiffening_keeps_integers()`}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

@@ -382,34 +382,29 @@ void stiffen(const CornerMesh& M, const Guidance_system& S, const std::vector<st
 constexpr std::size_t stiffening_patience = 8;
 
 // Rounds of solves: the first one, then stiffening while faces flip. The
-// first round rounds the integers; a stiffening round keeps the integers of
-// the last rounding and solves for the continuous unknowns only (one
-// factorization and one solve), as long as that removes flips. A round that
-// does not have fewer flips than the one before it makes the next round
-// round the integers again, with the stiffened weights (every round rounds
-// them without p.keep_integers). best_y is the
-// solution of the round with the fewest flips (then the lowest energy); the
-// rounds end without flips, after p.max_rounds stiffening rounds, or after
-// stiffening_patience rounds without fewer flips than best_y's.
+// first round rounds the integers. With keep_integers, a stiffening round
+// keeps the integers of the last rounding and solves for the continuous
+// unknowns only (one factorization and one solve), as long as that removes
+// flips; a round that does not have fewer flips than the one before it makes
+// the next round round the integers again, with the stiffened weights.
+// Without, every round rounds them. The rounds end without flips, after
+// p.max_rounds stiffening rounds, or after stiffening_patience rounds without
+// fewer flips than the best; best_y is the solution of the round with the
+// fewest flips (then the lowest energy) among the rounds of every call.
 template <typename CornerMesh, typename Solver, typename Report>
-Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, std::size_t nx, std::size_t m,
-                                 const Seamless_map_parameters& p, const Solver& solver_prototype,
-                                 const Seamless_reduction& R, Eigen::VectorXd& best_y, Report& result)
+Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, std::size_t m,
+                             const Seamless_map_parameters& p, bool keep_integers, const Seamless_reduction& R,
+                             const std::vector<std::vector<std::size_t> >& vertex_faces,
+                             Mixed_integer_system<Solver>& system, Eigen::VectorXd& best_y,
+                             std::size_t& best_flips, double& best_energy, Report& result)
 {
-  const std::vector<Distinct_points> distinct = integer_point_pairs(M, R);
-  const std::size_t F = M.F, C = 3 * F;
+  const std::size_t F = M.F;
   std::vector<double> weight(F, 1.0), row_weight(4 * F, 1.0);
   Eigen::VectorXd y_cont, y_round, integers;
   std::vector<Complex> uv;
   std::vector<char> flag;
-  std::size_t best_flips = std::numeric_limits<std::size_t>::max(), last_flips = best_flips;
-  double best_energy = 0;
-  std::size_t best_round = 0;
+  std::size_t fewest = std::numeric_limits<std::size_t>::max(), last_flips = fewest, best_round = 0;
   bool round_integers = true;
-  std::vector<std::vector<std::size_t> > vertex_faces(M.V);
-  for(std::size_t c = 0; c < C; ++c)
-    vertex_faces[M.target[c]].push_back(CornerMesh::face(c));
-  Mixed_integer_system<Solver> system(S.B1, S.d1, nx, m, distinct, solver_prototype);
   for(std::size_t round = 0; round <= p.max_rounds; ++round)
   {
     const auto round_start = std::chrono::steady_clock::now();
@@ -430,7 +425,7 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
     }
     if(code != Error_code::SUCCESS)
       return code;
-    if(round == 0)
+    if(round == 0 && result.flipped_per_round.empty())
     {
       corner_uv(R, y_cont, uv);
       result.continuous_energy = guidance_energy(S, uv);
@@ -439,15 +434,18 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
     const std::size_t flips = flipped_faces(S, uv, flag);
     const double E = guidance_energy(S, uv);
     result.flipped_per_round.push_back(flips);
-    if(flips < best_flips)
+    if(flips < fewest)
+    {
+      fewest = flips;
       best_round = round;
+    }
     if(flips < best_flips || (flips == best_flips && E < best_energy))
     {
       best_flips = flips;
       best_energy = E;
       best_y = y_round;
     }
-    if(round > 0)
+    if(round > 0 || result.flipped_per_round.size() > 1)
     {
       ++result.stiffening_rounds;
       result.time_stiffening += seconds_since(round_start);
@@ -456,11 +454,35 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
       break;
     // keeping the integers stalled: round them again (a rounding is always
     // followed by at least one round that keeps them)
-    round_integers = !p.keep_integers || (!round_integers && round > 0 && flips >= last_flips);
+    round_integers = !keep_integers || (!round_integers && round > 0 && flips >= last_flips);
     last_flips = flips;
     stiffen(M, S, vertex_faces, uv, flag, p.stiffening, weight);
   }
   return Error_code::SUCCESS;
+}
+
+// The rounds of run_stiffening_rounds(): with p.keep_integers, first the fast
+// rounds that keep the integers; when faces still flip after them, the rounds
+// again from unit weights, rounding the integers in every round (a wider
+// search: on fandisk the fast rounds left a flip that released two sharp
+// edges, the second search none). best_y is the best of all rounds.
+template <typename CornerMesh, typename Solver, typename Report>
+Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, std::size_t nx, std::size_t m,
+                                 const Seamless_map_parameters& p, const Solver& solver_prototype,
+                                 const Seamless_reduction& R, Eigen::VectorXd& best_y, Report& result)
+{
+  const std::vector<Distinct_points> distinct = integer_point_pairs(M, R);
+  std::vector<std::vector<std::size_t> > vertex_faces(M.V);
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    vertex_faces[M.target[c]].push_back(CornerMesh::face(c));
+  Mixed_integer_system<Solver> system(S.B1, S.d1, nx, m, distinct, solver_prototype);
+  std::size_t best_flips = std::numeric_limits<std::size_t>::max();
+  double best_energy = 0;
+  Error_code code = run_stiffening_rounds(M, S, m, p, p.keep_integers, R, vertex_faces, system, best_y, best_flips,
+                                      best_energy, result);
+  if(code == Error_code::SUCCESS && p.keep_integers && best_flips > 0)
+    code = run_stiffening_rounds(M, S, m, p, false, R, vertex_faces, system, best_y, best_flips, best_energy, result);
+  return code;
 }
 
 // Snaps the unknowns to a dyadic grid (continuous) and to integers (integer

@@ -1,0 +1,479 @@
+# Copyright (c) 2026 CGAL Polyvector Fields contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Author(s): CGAL Polyvector Fields developers
+#
+# This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+# It is not part of CGAL.
+
+"""PolyVector fields and planar-quad remeshing on triangle meshes, on numpy arrays.
+
+The conventions are those of libigl's Python bindings:
+
+- ``V`` is a float64 array of shape (#V, 3), the vertex positions;
+- ``F`` is an integer array (int32 or int64, C or Fortran order) of shape
+  (#F, 3), the triangles, as rows of vertex indices (0-based);
+- functions return tuples of numpy arrays, the last element being a dict of
+  the figures that the C++ function reports (counts, measures, times);
+- keyword arguments are named like the C++ named parameters.
+
+Every function refuses bad input with :class:`Error` (a ``ValueError``): its
+message names the argument and the cause, and its ``code`` attribute is the
+name of the package's ``Error_code`` (``"NON_MANIFOLD_MESH"``,
+``"DUPLICATE_CONSTRAINT"``, ...) or ``"BAD_ARRAY"`` for an argument of the wrong
+type or shape. The C++ work runs without the GIL, so threads can design fields
+at the same time.
+
+The method is that of "Designing N-PolyVector Fields with Complex Polynomials"
+(Diamanti, Vaxman, Panozzo, Sorkine-Hornung, SGP 2014); section numbers below
+are the paper's. The user manual (doc/Polyvector_fields) has a Python section.
+"""
+
+import math
+import os
+import tempfile
+
+import numpy as np
+
+from . import _core
+from ._core import Error
+
+__all__ = [
+    "Error", "read_triangle_mesh", "save_mesh", "design_field", "frame_field", "singularities",
+    "principal_curvatures", "sharp_edges", "refine_for_quad_size", "integer_grid_map", "quad_mesh",
+    "quad_planarity", "planarize", "quad_remesh",
+]
+
+Error.__doc__ = """A refusal or a failure of the package.
+
+``str(e)`` is the package's message with the argument or stage it concerns;
+``e.code`` is the name of the ``Error_code`` value (for instance
+``"NON_MANIFOLD_MESH"``), or ``"BAD_ARRAY"`` for an array of the wrong type or shape."""
+
+
+def _refuse(message, code="BAD_ARRAY"):
+    error = Error(message + " (" + code + ")")
+    error.code = code
+    return error
+
+
+def read_triangle_mesh(filename, repair=True):
+    """Reads a mesh file (.off, .obj, .ply, .stl) as a triangle mesh.
+
+    With ``repair`` (default), polygons are triangulated and a polygon soup is
+    repaired (duplicate points merged, duplicate and degenerate faces removed,
+    faces reoriented, non-manifold vertices split), exactly as the command-line
+    program ``design_polyvector_field`` does; without it such a mesh is refused.
+
+    Returns ``V, F, info``; ``info["source_face"][i]`` is the position in the
+    file of the face that face ``i`` comes from.
+    """
+    return _core.read_triangle_mesh(os.fspath(filename), repair)
+
+
+def save_mesh(filename, V, F):
+    """Writes a polygon mesh (triangles or quads: ``F`` of shape (#F, k)) as .obj or .off.
+
+    Coordinates are written with 17 significant digits, so that they read back
+    exactly. The file is written to a temporary file in the same folder and
+    renamed: on failure nothing is left half-written.
+    """
+    filename = os.fspath(filename)
+    V = np.asarray(V, dtype=np.float64)
+    F = np.asarray(F)
+    if V.ndim != 2 or V.shape[1] != 3:
+        raise _refuse("save_mesh: V: expected shape (n, 3), got %s" % (V.shape,))
+    if F.ndim != 2 or F.shape[1] < 3 or F.dtype.kind not in "iu":
+        raise _refuse("save_mesh: F: expected an integer array of shape (n, k >= 3), got %s %s" % (F.dtype, F.shape))
+    if F.size and (F.min() < 0 or F.max() >= len(V)):
+        raise _refuse("save_mesh: F: an index is not a vertex of V (0..%d)" % (len(V) - 1))
+    extension = os.path.splitext(filename)[1].lower()
+    if extension not in (".obj", ".off"):
+        raise _refuse("save_mesh: '%s': the format is chosen by the extension, .obj or .off" % filename)
+    lines = []
+    if extension == ".off":
+        lines.append("OFF\n%d %d 0\n" % (len(V), len(F)))
+        lines.extend("%.17g %.17g %.17g\n" % tuple(p) for p in V)
+        lines.extend("%d %s\n" % (len(f), " ".join(str(int(i)) for i in f)) for f in F)
+    else:
+        lines.extend("v %.17g %.17g %.17g\n" % tuple(p) for p in V)
+        lines.extend("f %s\n" % " ".join(str(int(i) + 1) for i in f) for f in F)
+    folder = os.path.dirname(os.path.abspath(filename))
+    handle, temporary = tempfile.mkstemp(prefix=".pvf_", dir=folder)
+    try:
+        with os.fdopen(handle, "w") as out:
+            out.writelines(lines)
+        os.replace(temporary, filename)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
+def design_field(V, F, b, bc, degree=4, sign_symmetric=False, soft=None, smoothness_weights="uniform"):
+    """Designs the smoothest N-PolyVector field that meets the constraints (Section 3).
+
+    An N-PolyVector field gives every face N tangent vectors, the roots of a
+    complex polynomial of degree N in the face's tangent plane (Section 3.1).
+    The field minimises the smoothness energy of the coefficients, compared
+    across each edge by Levi-Civita transport (Sections 3.2, 3.3), subject to
+    the constraints (Section 3.6). It is found by one sparse linear solve per
+    coefficient, with no integer variable and no iteration.
+
+    Parameters
+    ----------
+    V, F : the triangle mesh.
+    b : int array (#b,), the constrained faces.
+    bc : float array (#b, 3k), the constraint vectors of each face, k vectors
+        x, y, z per row. k = N (k = N/2 with ``sign_symmetric``) fixes the whole
+        PolyVector of the face (a full constraint); fewer vectors ask that each
+        be one of the face's N vectors (a partial constraint, the condition
+        P(u) = 0). Rows with fewer vectors than others end with NaN triples.
+        ``b`` and ``bc`` may both be None: each connected component then gets
+        the smoothest field of unit vectors (an N-RoSy field).
+    degree : N, the number of vectors per face (1 to 32).
+    sign_symmetric : the vectors come in pairs {u, -u} (N even): with N = 4,
+        a frame field {±u, ±v} (Section 4).
+    soft : None (hard constraints, met exactly), or a weight in [1e-8, 1e8]
+        for all constraints, or one weight per row of ``b``: the constraint is
+        then a term weight * |residual|^2 of the energy (Section 3.6).
+    smoothness_weights : "uniform" (the paper's: every edge weighs 1) or
+        "harmonic" (3|e|^2 / (A_f + A_g), which follows the geometry rather
+        than the triangulation's density).
+
+    Returns
+    -------
+    X : float array (#F, 3N), the N vectors of each face in world coordinates,
+        counterclockwise about the face normal (row f: x0 y0 z0 x1 y1 z1 ...);
+        with ``sign_symmetric``, vector k + N/2 is exactly -vector k. These are
+        the numbers the command-line program writes to its .rawfield file.
+    info : dict: the numbers of full, partial and soft constraints, the
+        connected components, the smoothness energy and the times.
+    """
+    return _core.design_field(V, F, b, bc, degree, sign_symmetric, soft, smoothness_weights)
+
+
+def frame_field(V, F, b=None, bc=None, curvature_constraints=None, conjugate=False, angle_bound=None, soft=None,
+                orthogonality_weight=0.0, number_of_iterations=None, tolerance=None, smoothness_weights="uniform"):
+    """Designs a frame field {±u, ±v} (N = 4, sign-symmetric), optionally optimised (Section 4).
+
+    The smooth frame field of the constraints (as :func:`design_field` with
+    ``degree=4, sign_symmetric=True``) is then, on request, optimised by the
+    paper's local-global iterations, which keep the hard constraints:
+
+    Parameters
+    ----------
+    V, F : the triangle mesh.
+    b, bc : constraints as in :func:`design_field`, with 1 or 2 vectors per face
+        (bc of 3 or 6 columns); both None for none.
+    curvature_constraints : None, or a fraction in (0, 1] of the faces to
+        constrain to their principal curvature directions: the most
+        anisotropic faces, spread over the surface, as the paper sampled its
+        constraints from the principal directions (Section 4.1). Faces in ``b``
+        keep their own constraint.
+    conjugate : optimise the field to be conjugate, u^T S v = 0 with S the
+        shape operator of the surface: the directions that planar-quad meshes
+        follow (Section 4.3).
+    angle_bound : None, or an angle in degrees in (0, 90]: optimise the field
+        so that u and v make at least this angle in every free face (Section 4.2).
+    soft : as in :func:`design_field`; a single weight applies to the curvature
+        constraints too.
+    orthogonality_weight : with ``conjugate``, the weight of the term that pulls
+        the field towards a cross field (Section 4.2, "Orthogonality control").
+    number_of_iterations : the iteration limit (default: the algorithm's,
+        200 for the angle bound, 50 for conjugacy).
+    tolerance : with ``angle_bound``, how far in degrees the iterations may stop
+        below the bound (default 0.5); with ``conjugate``, the mean normalised
+        deviation |u^T S v| / (|u| |v| max|k|) at which they stop (default 5e-3).
+    smoothness_weights : as in :func:`design_field`.
+
+    Not reaching the bound or the tolerance within the iterations is reported in
+    ``info`` (``angle_bound_converged``, ``conjugate_converged``), not raised, as
+    the command-line program does.
+
+    Returns
+    -------
+    X : float array (#F, 12): u, v, -u, -v of each face in world coordinates.
+    info : dict: constraint counts, energies before and after the optimisation,
+        iterations, smallest angles (degrees), conjugacy deviation.
+    """
+    return _core.frame_field(V, F, b, bc, curvature_constraints, conjugate, angle_bound, soft, orthogonality_weight,
+                             number_of_iterations, tolerance, smoothness_weights)
+
+
+def singularities(V, F, X, sign_symmetric=None):
+    """Finds the singular vertices of a field given by its vectors (Section 3.4).
+
+    The index of an interior vertex is the number of turns, in units of 1/N,
+    that the field's vectors make around it, matched across each edge without
+    integer variables by the roots of the transported polynomial (Section 3.4).
+
+    Parameters
+    ----------
+    X : float array (#F, 3N), the N vectors of each face (as returned by
+        :func:`design_field`); the field's coefficients are rebuilt from them.
+    sign_symmetric : whether the vectors come in pairs {u, -u}; None (default)
+        tells it from X: vector k + N/2 exactly -vector k in every face.
+
+    Returns
+    -------
+    S : int array, the singular vertices.
+    index : float array, their indices k/N (never 0).
+    info : dict: ``degree``, ``index_numerators`` (the k's), and
+        ``undefined_vertices`` (vertices where a vector vanishes).
+    """
+    return _core.singularities(V, F, X, sign_symmetric)
+
+
+def principal_curvatures(V, F):
+    """Estimates the principal curvatures and directions of every face.
+
+    By a jet fit of the vertices' neighbourhoods (CGAL's Monge fitting),
+    averaged per face. Curvature is positive where the surface bends away from
+    the face normal; k1 >= k2; d1, d2 are unit, in the face plane, d2 = n x d1.
+
+    Returns ``PD1, PD2`` (#F, 3), ``PV1, PV2`` (#F,) and ``info``
+    (``fallback_vertices``: vertices that no jet fit determined, estimated from
+    the variation of the normals).
+    """
+    return _core.principal_curvatures(V, F)
+
+
+def sharp_edges(V, F, angle=40.0, boundary_alignment=True, minimum_feature_length=0.0, vectors_per_face=2):
+    """Selects the sharp edges and the constraints that make a frame field follow them.
+
+    An edge is sharp when the angle between the normals of its two faces exceeds
+    ``angle`` degrees; with ``boundary_alignment`` the border edges count too.
+    Connected sharp edges shorter than ``minimum_feature_length`` in all are
+    dropped (noise). Each face along a sharp edge gets a partial constraint
+    along it, up to ``vectors_per_face`` vectors.
+
+    Returns ``E`` (#E, 2) the feature edges as vertex pairs, ``b``, ``bc`` the
+    constraints (bc rows padded with NaN triples), and ``info``.
+    """
+    return _core.sharp_edges(V, F, angle, boundary_alignment, minimum_feature_length, vectors_per_face)
+
+
+def refine_for_quad_size(V, F, quad_size, features=None, boundary_alignment=False):
+    """Splits the edges longer than two quads (and the edges that join two feature vertices).
+
+    No vertex moves: new vertices are edge midpoints. Returns ``V2, F2``,
+    ``origin`` (the face of ``F`` each face of ``F2`` was cut from) and ``E2``,
+    the feature edges of the refined mesh.
+    """
+    return _core.refine_for_quad_size(V, F, quad_size, features, boundary_alignment)
+
+
+def integer_grid_map(V, F, X, edge_length=None, quads=None, features=None, boundary_alignment=False,
+                     singularity_cancellation_distance=None, stiffening_keeps_integers=True):
+    """Computes a seamless integer-grid map guided by a frame field (the parametrization of quad remeshing).
+
+    Parameters
+    ----------
+    X : the frame field, (#F, 12) as :func:`frame_field` returns it, or (#F, 6) for u, v.
+    edge_length : the quad size in mesh units: one unit of uv. Default: the
+        mean edge length of the mesh.
+    quads : instead of ``edge_length``, about this many quads
+        (quad size sqrt(area / quads)).
+    features : (#E, 2) vertex pairs of edges to put on integer iso-lines (the
+        ``E`` of :func:`sharp_edges`), so that they become quad edges.
+    boundary_alignment : the border also lies on integer iso-lines.
+    singularity_cancellation_distance : singularities of the field closer than
+        this (mesh units) are cancelled, merged or moved apart; default: the quad size.
+    stiffening_keeps_integers : the stiffening rounds that remove flipped
+        triangles keep the integers of the last rounding (faster); False rounds
+        them again in every round (another search).
+
+    Returns
+    -------
+    UV : float array (3 #F, 2), the uv of every corner; FUV : int array (#F, 3),
+        row f indexes UV for the corners F[f] (as libigl's MIQ returns them):
+        the map is discontinuous across the seams, by integer grid symmetries.
+    info : dict: target and mean edge lengths, singular vertices, seams,
+        flipped faces, and ``seam_transitions`` (#F, 3, 3): for corner k of face
+        f, (rotation r in 0..3, tx, ty) such that across the edge that ends at
+        F[f][k], uv in the other face = R^r uv + t (R the quarter turn); give it
+        to :func:`quad_mesh`.
+    """
+    return _core.integer_grid_map(V, F, X, edge_length, quads, features, boundary_alignment,
+                                  singularity_cancellation_distance, stiffening_keeps_integers)
+
+
+def quad_mesh(V, F, UV, FUV, seam_transitions=None):
+    """Extracts the quad mesh of a map's integer iso-lines (after QEx, Ebke et al. 2013).
+
+    One vertex per integer point of the map, one edge per iso-line segment
+    between two of them, one quad per cell. ``seam_transitions`` (from
+    :func:`integer_grid_map`'s info) gives the exact transitions; without it
+    they are found from the uv.
+
+    Returns ``Vq`` (#Vq, 3), ``Fq`` (#Q, 4) and ``info`` (quads, irregular vertices, repairs).
+    """
+    return _core.quad_mesh(V, F, UV, FUV, seam_transitions)
+
+
+def quad_planarity(Vq, Fq):
+    """Returns the planarity of every quad, and a dict of its max and mean.
+
+    The planarity of a quad is the distance between its two diagonals divided by
+    their mean length (the paper's measure of planar-quad meshes, Section 5).
+    """
+    return _core.quad_planarity(Vq, Fq)
+
+
+def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number_of_iterations=None):
+    """Moves the quad vertices until every quad is planar to ``threshold``, staying near the surface (V, F).
+
+    Local-global iterations (best-fit planes, then one sparse solve with
+    closeness to the triangle mesh and fairness). ``max_distance_to_surface``
+    bounds how far a vertex may end from the surface (default 5% of the mean
+    quad edge). When the threshold is not reached (``info["status"]`` is
+    ``"DID_NOT_CONVERGE"`` or ``"TOO_FAR_FROM_SURFACE"``), the quad mesh is
+    returned as given, not raised: the command-line program does the same.
+
+    Returns ``Vq2`` (the moved vertices; ``Fq`` is unchanged) and ``info``.
+    """
+    return _core.planarize(Vq, Fq, V, F, threshold, max_distance_to_surface, number_of_iterations)
+
+
+def _area_and_mean_edge(V, F):
+    p0, p1, p2 = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    area = 0.5 * np.linalg.norm(np.cross(p1 - p0, p2 - p0), axis=1).sum()
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    edges = np.unique(edges, axis=0)
+    mean_edge = np.linalg.norm(V[edges[:, 0]] - V[edges[:, 1]], axis=1).mean()
+    return area, mean_edge
+
+
+def _merge_constraints(rows, width):
+    """Stacks (b, bc) pairs into one, bc padded with NaN triples to `width` vectors."""
+    b = [np.asarray(r[0], dtype=np.int64).reshape(-1) for r in rows if len(r[0])]
+    if not b:
+        return None, None
+    bc = []
+    for r in rows:
+        if len(r[0]):
+            m = np.asarray(r[1], dtype=np.float64)
+            pad = np.full((len(m), 3 * width - m.shape[1]), np.nan)
+            bc.append(np.hstack([m, pad]))
+    return np.concatenate(b), np.vstack(bc)
+
+
+def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_alignment=True, conjugate=False,
+                planarize=False, b=None, bc=None, curvature_constraints=None, singularity_separation=1.0,
+                max_surface_distance=0.05):
+    """Remeshes a triangle mesh into quads: the whole road, from the surface to a (planar-)quad mesh.
+
+    The stages are those of the command-line program ``design_polyvector_field
+    --mesh M --parametrize --quad-mesh Q [--conjugate] [--planarize]``, each one
+    a function of this module:
+
+    1. the quad size h: ``edge_length``, or sqrt(area / ``quads``), or by default
+       the mean edge length, but at most sqrt(area / 1000) (at least about 1000 quads);
+    2. the feature edges (:func:`sharp_edges`: dihedral angle above
+       ``sharp_edges`` degrees, None for none; the border with
+       ``boundary_alignment``), creases shorter than 3h dropped, and the mesh
+       refined where its edges are longer than 2h (:func:`refine_for_quad_size`);
+    3. the constraints: ``b``, ``bc`` (on the faces of ``F``, passed to the
+       faces cut from them), then partial constraints along the feature edges of
+       the refined mesh on the faces not yet constrained;
+    4. the frame field (:func:`frame_field`, ``conjugate`` and
+       ``curvature_constraints`` passed on): conjugate for planar quads (Section 4.3);
+    5. the integer-grid map (:func:`integer_grid_map`, features on integer
+       iso-lines, singularities closer than ``singularity_separation`` quads cancelled);
+    6. the quad mesh (:func:`quad_mesh`, with the map's exact transitions); when
+       it reports ``UNREPAIRABLE_FOLD_OVER`` on a map without flipped
+       triangles, the map is computed again with ``stiffening_keeps_integers=False``
+       and the quads extracted from it;
+    7. with ``planarize`` (True for the paper's 1%, or a threshold),
+       :func:`planarize`, each vertex kept within ``max_surface_distance``
+       mean quad edges of the surface; then the planarity. A planarization
+       that does not reach the threshold leaves the quads as extracted
+       (``info["planarization"]["status"]`` says why), as in the program.
+
+    Differences from the command-line program: the map receives the field as
+    its vectors (the roots, rebuilt into coefficients, equal up to rounding), and
+    always the quad size h (the program lets the map compute its own mean edge
+    length when h is that mean on an unrefined mesh: the same value up to rounding).
+
+    Returns
+    -------
+    Vq, Fq : the quad mesh.
+    info : dict: ``quad_size``, the stages' dicts (``field``, ``map``,
+        ``quads``, ``planarization``), ``planarity`` (max, mean),
+        ``map_recomputed``, and ``V``, ``F`` of the refined triangle mesh.
+    """
+    V = np.asarray(V, dtype=np.float64)
+    F = np.asarray(F)
+    if V.ndim != 2 or V.shape[1] != 3:
+        raise _refuse("quad_remesh: V: expected shape (n, 3), got %s" % (V.shape,))
+    if F.ndim != 2 or F.shape[1] != 3 or F.dtype.kind not in "iu" or len(F) == 0:
+        raise _refuse("quad_remesh: F: expected a non-empty integer array of shape (n, 3), got %s %s" % (F.dtype, F.shape))
+    if F.min() < 0 or F.max() >= len(V):
+        raise _refuse("quad_remesh: F: an index is not a vertex of V (0..%d)" % (len(V) - 1))
+    if edge_length is not None and quads is not None:
+        raise _refuse("quad_remesh: give edge_length or quads, not both")
+    # 1. the quad size
+    area, mean_edge = _area_and_mean_edge(V, F)
+    if edge_length is not None:
+        h = float(edge_length)
+    elif quads is not None:
+        h = math.sqrt(area / float(quads))
+    else:
+        h = min(mean_edge, math.sqrt(area / 1000.0))
+    if not (h > 0 and math.isfinite(h)):
+        raise _refuse("quad_remesh: no quad size (a mesh without area, or a non-positive edge_length / quads)")
+    # 2. features and refinement
+    with_features = sharp_edges is not None or boundary_alignment
+    crease = float(sharp_edges) if sharp_edges is not None else 179.9
+    minimum_crease = 3.0 * h
+    if with_features:
+        E = globals()["sharp_edges"](V, F, crease, boundary_alignment, minimum_crease)[0]
+        V2, F2, origin, _ = refine_for_quad_size(V, F, h, E, boundary_alignment)
+    else:
+        V2, F2, origin, _ = refine_for_quad_size(V, F, h)
+    # 3. constraints: the user's, then the feature edges' on the faces left
+    rows = []
+    if b is not None or bc is not None:
+        b0 = np.asarray(b).reshape(-1)
+        bc0 = np.asarray(bc, dtype=np.float64)
+        if bc0.ndim != 2 or len(bc0) != len(b0):
+            raise _refuse("quad_remesh: bc: expected one row per entry of b")
+        row_of = {int(f): i for i, f in enumerate(b0)}
+        new_faces = [f for f in range(len(F2)) if int(origin[f]) in row_of]
+        rows.append((np.array(new_faces, dtype=np.int64), bc0[[row_of[int(origin[f])] for f in new_faces]]))
+    features = None
+    if with_features:
+        features, b_sharp, bc_sharp, _ = globals()["sharp_edges"](V2, F2, crease, boundary_alignment, minimum_crease)
+        taken = set(int(f) for f in rows[0][0]) if rows else set()
+        keep = [i for i, f in enumerate(b_sharp) if int(f) not in taken]
+        rows.append((b_sharp[keep], bc_sharp[keep]))
+    b2, bc2 = _merge_constraints(rows, 2)
+    # 4. the frame field
+    X, field_info = frame_field(V2, F2, b2, bc2, curvature_constraints=curvature_constraints, conjugate=conjugate)
+    # 5. the map, 6. the quads
+    map_args = dict(edge_length=h, features=features, boundary_alignment=boundary_alignment,
+                    singularity_cancellation_distance=singularity_separation * h)
+    UV, FUV, map_info = integer_grid_map(V2, F2, X, **map_args)
+    recomputed = False
+    try:
+        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"])
+    except Error as e:
+        if e.code != "UNREPAIRABLE_FOLD_OVER" or map_info["flipped_faces"] != 0:
+            raise
+        UV, FUV, map_info = integer_grid_map(V2, F2, X, stiffening_keeps_integers=False, **map_args)
+        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"])
+        recomputed = True
+    # 7. planarization
+    planarization_info = None
+    if planarize:
+        threshold = 0.01 if planarize is True else float(planarize)
+        edges = np.unique(np.sort(np.concatenate([Fq[:, [k, (k + 1) % 4]] for k in range(4)]), axis=1), axis=0)
+        mean_quad_edge = np.linalg.norm(Vq[edges[:, 0]] - Vq[edges[:, 1]], axis=1).mean()
+        Vq, planarization_info = globals()["planarize"](Vq, Fq, V2, F2, threshold=threshold,
+                                                        max_distance_to_surface=max_surface_distance * mean_quad_edge)
+    _, planarity = quad_planarity(Vq, Fq)
+    info = {
+        "quad_size": h, "V": V2, "F": F2, "field": field_info, "map": map_info, "quads": quad_info,
+        "planarization": planarization_info, "planarity": planarity, "map_recomputed": recomputed,
+    }
+    return Vq, Fq, info

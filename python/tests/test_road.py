@@ -1,0 +1,71 @@
+# Copyright (c) 2026 CGAL Polyvector Fields contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Author(s): CGAL Polyvector Fields developers
+#
+# This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+# It is not part of CGAL.
+
+# The whole road on a bundled mesh: quads, counts, planarity after the
+# planarization, and the quad mesh saved and read back.
+
+import numpy as np
+
+import polyvector_fields as pvf
+from conftest import data_path
+from test_field import run_cli
+
+
+def test_quad_remesh_makes_planar_quads(tmp_path):
+    # The paper's architectural mesh, a conjugate field, about 1000 quads, planar to 2%.
+    V, F, _ = pvf.read_triangle_mesh(data_path("inspired_mesh.obj"))
+    Vq, Fq, info = pvf.quad_remesh(V, F, quads=1000, conjugate=True, planarize=0.02)
+    # All quads, every vertex used, the counts the stages report.
+    assert Fq.ndim == 2 and Fq.shape[1] == 4 and len(Fq) > 0
+    assert info["quads"]["quads"] == len(Fq) and info["quads"]["vertices"] == len(Vq)
+    assert np.array_equal(np.unique(Fq), np.arange(len(Vq)))
+    # About the quads asked for.
+    assert 800 <= len(Fq) <= 1200, len(Fq)
+    # Every quad edge in one or two quads (a manifold quad mesh with a border).
+    edges = np.sort(np.concatenate([Fq[:, [k, (k + 1) % 4]] for k in range(4)]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    assert counts.max() == 2 and (counts == 1).any()
+    # Conjugate field, then planarization to the threshold.
+    assert info["field"]["conjugate_iterations"] > 0
+    assert info["planarization"]["status"] == "SUCCESS"
+    assert info["planarization"]["max_planarity_before"] > 0.02  # there was something to do
+    P, planarity = pvf.quad_planarity(Vq, Fq)
+    assert planarity["max"] <= 0.02 and P.max() == planarity["max"]
+    assert info["planarity"]["max"] == planarity["max"]
+    # The same stages as the command-line program: the same numbers of quads and vertices.
+    cli_quads = tmp_path / "cli.obj"
+    run_cli(tmp_path, "--mesh", data_path("inspired_mesh.obj"), "--quads", "1000", "--conjugate",
+            "--planarize", "0.02", "--quad-mesh", str(cli_quads), "--out-field", str(tmp_path / "cli.rawfield"))
+    lines = cli_quads.read_text().split("\n")
+    assert sum(line.startswith("f ") for line in lines) == len(Fq)
+    assert sum(line.startswith("v ") for line in lines) == len(Vq)
+    # Saved and read back exactly (17 digits), as quads.
+    path = tmp_path / "quads.obj"
+    pvf.save_mesh(path, Vq, Fq)
+    text = path.read_text().split("\n")
+    assert sum(line.startswith("f ") for line in text) == len(Fq)
+    read = np.array([[float(w) for w in line.split()[1:]] for line in text if line.startswith("v ")])
+    assert np.array_equal(read, Vq)
+
+
+def test_the_stages_of_the_road_one_by_one():
+    # The road of quad_remesh, called stage by stage on a closed mesh without features.
+    V, F, _ = pvf.read_triangle_mesh(data_path("bumpy.off"))
+    X, finfo = pvf.frame_field(V, F, curvature_constraints=0.02)
+    assert finfo["curvature_constraints"] > 0 and X.shape == (len(F), 12)
+    UV, FUV, minfo = pvf.integer_grid_map(V, F, X, quads=300)
+    Vq, Fq, qinfo = pvf.quad_mesh(V, F, UV, FUV, minfo["seam_transitions"])
+    P, planarity = pvf.quad_planarity(Vq, Fq)
+    Vp, pinfo = pvf.planarize(Vq, Fq, V, F, threshold=0.05)
+    _, after = pvf.quad_planarity(Vp, Fq)
+    assert pinfo["status"] in ("SUCCESS", "DID_NOT_CONVERGE", "TOO_FAR_FROM_SURFACE")
+    if pinfo["status"] == "SUCCESS":
+        assert after["max"] <= 0.05
+    else:
+        assert np.array_equal(Vp, Vq)  # not reached: the quads come back as given
+    assert abs(after["max"] - pinfo["max_planarity_after"]) <= 1e-12 or pinfo["status"] != "SUCCESS"
+    assert abs(planarity["max"] - pinfo["max_planarity_before"]) <= 1e-12

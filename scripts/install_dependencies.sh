@@ -14,8 +14,11 @@
 # doxygen is always installed: the test doc_polyvector_fields_doxygen needs it.
 set -euo pipefail
 
+# pybind11-dev python3-dev python3-numpy: the Python module (python/);
+# python3-pytest: its tests.
 packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libgtest-dev
-          libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libopenmesh-dev doxygen)
+          libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libopenmesh-dev doxygen
+          pybind11-dev python3-dev python3-numpy python3-pytest)
 for arg in "$@"; do
   case "$arg" in
     --doc) packages+=(python3-matplotlib) ;;

@@ -213,6 +213,40 @@ Matrix_i read_integer(py::handle object, const std::string& name, std::size_t co
   return m;
 }
 
+// An optional number argument (None: not given), refused with its name when it is not a number.
+std::optional<double> read_number(py::handle h, const std::string& name)
+{
+  if(h.is_none())
+    return std::nullopt;
+  try
+  {
+    return h.cast<double>();
+  }
+  catch(const py::cast_error&)
+  {
+    throw Failure(name + ": expected a number or None (INVALID_PARAMETER)", "INVALID_PARAMETER");
+  }
+}
+
+// An optional count argument (None: 0, the default), at least 1 when given.
+std::size_t read_count(py::handle h, const std::string& name)
+{
+  if(h.is_none())
+    return 0;
+  long long v = 0;
+  try
+  {
+    v = h.cast<long long>();
+  }
+  catch(const py::cast_error&)
+  {
+    throw Failure(name + ": expected an integer or None (INVALID_PARAMETER)", "INVALID_PARAMETER");
+  }
+  if(v < 1)
+    throw Failure(name + ": " + std::to_string(v) + " is not at least 1 (INVALID_PARAMETER)", "INVALID_PARAMETER");
+  return std::size_t(v);
+}
+
 // Checks that every entry of `m` is an index into 0..n-1.
 void check_indices(const Matrix_i& m, std::size_t n, const std::string& name, const std::string& of_what)
 {
@@ -239,6 +273,32 @@ Mesh_arrays read_mesh_arrays(py::handle V, py::handle F, std::size_t corners = 3
     throw Failure(f_name + ": the mesh has no face (EMPTY_MESH)", "EMPTY_MESH");
   check_indices(m.F, m.V.rows, f_name, "a vertex of " + v_name);
   return m;
+}
+
+// The mesh without the vertices that no face uses (their rows of V dropped, F
+// renumbered), for the stages whose output does not refer to the input's
+// vertices: an isolated vertex has no directions, and the quad extraction
+// would take it for a singular point off the integer grid.
+Mesh_arrays without_isolated_vertices(const Mesh_arrays& a)
+{
+  std::vector<std::int64_t> renumbered(a.V.rows, -1);
+  for(std::int64_t v : a.F.data)
+    renumbered[std::size_t(v)] = 0;
+  Mesh_arrays out;
+  out.V.cols = 3;
+  std::int64_t n = 0;
+  for(std::size_t i = 0; i < a.V.rows; ++i)
+    if(renumbered[i] == 0)
+    {
+      renumbered[i] = n++;
+      out.V.data.insert(out.V.data.end(), a.V.data.begin() + std::ptrdiff_t(3 * i),
+                        a.V.data.begin() + std::ptrdiff_t(3 * i + 3));
+    }
+  out.V.rows = std::size_t(n);
+  out.F = a.F;
+  for(std::int64_t& v : out.F.data)
+    v = renumbered[std::size_t(v)];
+  return out;
 }
 
 // Builds a Surface_mesh whose vertex i and face i are V's row i and F's row i.
@@ -620,14 +680,12 @@ py::tuple frame_field(py::handle V, py::handle F, py::handle b, py::handle bc, p
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const Constraint_arrays ca = read_constraints(b, bc, soft, a.F.rows);
   const PVF::Smoothness_weights weights = read_weights(smoothness_weights);
-  const std::optional<double> fraction =
-    curvature_constraints.is_none() ? std::nullopt : std::optional<double>(curvature_constraints.cast<double>());
-  const std::optional<double> bound =
-    angle_bound.is_none() ? std::nullopt : std::optional<double>(angle_bound.cast<double>());
-  const std::size_t iterations = number_of_iterations.is_none() ? 0 : number_of_iterations.cast<std::size_t>();
+  const std::optional<double> fraction = read_number(curvature_constraints, "curvature_constraints");
+  const std::optional<double> bound = read_number(angle_bound, "angle_bound");
+  const std::size_t iterations = read_count(number_of_iterations, "number_of_iterations");
   // soft given as one number: the curvature constraints are soft with it too
   const bool soft_for_all = !soft.is_none() && (py::isinstance<py::float_>(soft) || py::isinstance<py::int_>(soft));
-  const std::optional<double> tol = tolerance.is_none() ? std::nullopt : std::optional<double>(tolerance.cast<double>());
+  const std::optional<double> tol = read_number(tolerance, "tolerance");
   if(bound && !(*bound > 0 && *bound <= 90))
     throw Failure("angle_bound: " + std::to_string(*bound) + " degrees is not in (0, 90] (INVALID_PARAMETER)",
                   "INVALID_PARAMETER");
@@ -972,13 +1030,14 @@ py::tuple integer_grid_map(py::handle V, py::handle F, py::handle X, py::handle 
   if(!edge_length.is_none() && !quads.is_none())
     throw Failure("integer_grid_map: give edge_length or quads, not both (INVALID_PARAMETER)", "INVALID_PARAMETER");
   const std::optional<Matrix_i> E = read_optional_features(features, a.V.rows);
-  const double given_h = edge_length.is_none() ? 0 : edge_length.cast<double>();
-  const double given_quads = quads.is_none() ? 0 : quads.cast<double>();
+  const double given_h = read_number(edge_length, "edge_length").value_or(0.);
+  const double given_quads = read_number(quads, "quads").value_or(0.);
+  if(!edge_length.is_none() && !(given_h > 0 && std::isfinite(given_h)))
+    throw Failure("edge_length: must be positive and finite (INVALID_PARAMETER)", "INVALID_PARAMETER");
   if(!quads.is_none() && !(given_quads >= 1 && std::isfinite(given_quads)))
     throw Failure("quads: must be at least 1 (INVALID_PARAMETER)", "INVALID_PARAMETER");
-  const std::optional<double> cancellation = singularity_cancellation_distance.is_none()
-                                               ? std::nullopt
-                                               : std::optional<double>(singularity_cancellation_distance.cast<double>());
+  const std::optional<double> cancellation =
+    read_number(singularity_cancellation_distance, "singularity_cancellation_distance");
 
   std::vector<double> UV;
   std::vector<std::int64_t> FUV, transitions;
@@ -1084,7 +1143,7 @@ void quads_to_arrays(const Mesh& qm, std::vector<double>& Vq, std::vector<std::i
 
 py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, py::handle seam_transitions)
 {
-  const Mesh_arrays a = read_mesh_arrays(V, F);
+  const Mesh_arrays a = without_isolated_vertices(read_mesh_arrays(V, F));
   const Matrix_d UVm = read_real(UV, "UV", 2);
   const Matrix_i FUVm = read_integer(FUV, "FUV", 3);
   if(FUVm.rows != a.F.rows)
@@ -1192,9 +1251,8 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, do
 {
   const Mesh_arrays q = read_mesh_arrays(Vq, Fq, 4, "Vq", "Fq");
   const Mesh_arrays a = read_mesh_arrays(V, F);
-  const std::optional<double> distance =
-    max_distance_to_surface.is_none() ? std::nullopt : std::optional<double>(max_distance_to_surface.cast<double>());
-  const std::size_t iterations = number_of_iterations.is_none() ? 0 : number_of_iterations.cast<std::size_t>();
+  const std::optional<double> distance = read_number(max_distance_to_surface, "max_distance_to_surface");
+  const std::size_t iterations = read_count(number_of_iterations, "number_of_iterations");
   std::vector<double> out;
   PVF::Planarization_result r;
   PVF::Error_code code;

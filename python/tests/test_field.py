@@ -186,6 +186,12 @@ def test_integer_grid_map_is_seamless(bumpy):
     Vq2, Fq2, _ = pvf.quad_mesh(V, F, UV, FUV)
     assert Fq.shape[1] == 4 and qinfo["quads"] == len(Fq) > 0
     assert np.array_equal(Vq, Vq2) and np.array_equal(Fq, Fq2)
+    # A vertex that no face uses changes nothing (the map and the quads ignore it).
+    V1 = np.r_[V, [[100.0, 100.0, 100.0]]]
+    UV1, FUV1, _ = pvf.integer_grid_map(V1, F, X, quads=300)
+    assert np.array_equal(UV1, UV) and np.array_equal(FUV1, FUV)
+    Vq1, Fq1, _ = pvf.quad_mesh(V1, F, UV1, FUV1, T)
+    assert np.array_equal(Vq1, Vq) and np.array_equal(Fq1, Fq)
     # A closed surface gives a closed quad mesh: every edge in two quads.
     edges = np.sort(np.concatenate([Fq[:, [k, (k + 1) % 4]] for k in range(4)]), axis=1)
     _, counts = np.unique(edges, axis=0, return_counts=True)

@@ -1208,9 +1208,7 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
     std::string message = std::string("quad_mesh: ") + PVF::get_error_message(code);
     if(!r.diagnostic.empty())
       message += ": " + r.diagnostic;
-    // The flipped faces of the map tell the road whether computing it again may help.
-    Failure failure(message + " (" + code_name(code) + ")", code_name(code));
-    throw failure;
+    throw Failure(message + " (" + code_name(code) + ")", code_name(code));
   }
   py::dict info;
   info["quads"] = r.quads;

@@ -390,6 +390,10 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
        that does not reach the threshold leaves the quads as extracted
        (``info["planarization"]["status"]`` says why), as in the program.
 
+    The defaults are the program's for a mesh given with ``--mesh``: sharp
+    edges above 40 degrees and the border on quad edges (its bundled run without
+    ``--mesh`` keeps a free border: ``sharp_edges=None, boundary_alignment=False``),
+    singularity separation 1, surface distance 5% of the mean quad edge.
     Differences from the command-line program: the map receives the field as
     its vectors (the roots, rebuilt into coefficients, equal up to rounding), and
     always the quad size h (the program lets the map compute its own mean edge

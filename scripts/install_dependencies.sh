@@ -12,10 +12,13 @@
 #   bash scripts/install_dependencies.sh --doc    also matplotlib, to redraw the manual's figures
 #                                                 (doc/Polyvector_fields/make_figures.py)
 # doxygen is always installed: the test doc_polyvector_fields_doxygen needs it.
+# libjs-three (three.js, copied into the pages of --out-html) and chromium
+# (the browser of the test cli_html_viewer_browser) too.
 set -euo pipefail
 
 packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libgtest-dev
-          libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libopenmesh-dev doxygen)
+          libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libopenmesh-dev doxygen
+          libjs-three chromium)
 for arg in "$@"; do
   case "$arg" in
     --doc) packages+=(python3-matplotlib) ;;

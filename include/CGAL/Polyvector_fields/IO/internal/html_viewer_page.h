@@ -168,7 +168,7 @@ inline const char* html_viewer_script()
     fieldGeometry.setAttribute('position', new THREE.BufferAttribute(segments, 3));
     addLayer('field', new THREE.LineSegments(fieldGeometry, new THREE.LineBasicMaterial({ color: 0x1a1a60 })),
              'field (' + N + ' vectors per face' +
-             (data.field.stride > 1 ? ', every ' + data.field.stride + 'th face' : '') + ')', !hasQuads);
+             (data.field.stride > 1 ? ', on 1 face in ' + data.field.stride : '') + ')', !hasQuads);
   }
 
   // The constrained faces, drawn over the surface.
@@ -254,16 +254,17 @@ inline const char* html_viewer_script()
     for (var name in layers) layers[name].shown = asked.indexOf(name) >= 0;
   }
 
-  // The camera: an oblique view of the whole surface, the shortest side of
-  // the bounding box up when it is z; or, with view=worst, straight at the
-  // quad of largest planarity.
+  // The camera: an oblique view of the whole surface, y up, or z up when the
+  // bounding box is flat along z (a roof, a terrain); or, with view=worst,
+  // straight at the quad of largest planarity.
   var controls = new THREE.OrbitControls(camera, renderer.domElement);
   var extent = data.surface.extent;
-  var zUp = extent[2] <= extent[0] && extent[2] <= extent[1];
+  var zUp = extent[2] < 0.6 * Math.min(extent[0], extent[1]);
   camera.up.set(0, zUp ? 0 : 1, zUp ? 1 : 0);
   var direction = zUp ? new THREE.Vector3(0.45, -1, 0.75) : new THREE.Vector3(0.45, 0.6, 1);
-  var distance = radius / Math.sin(camera.fov * Math.PI / 360) * 0.8;
-  controls.target.set(0, 0, 0);
+  var distance = radius / Math.sin(camera.fov * Math.PI / 360) * 0.85;
+  // The surface a little below the middle, clear of the panel of layers.
+  controls.target.copy(camera.up).multiplyScalar(0.06 * radius);
   if (hash.view === 'worst' && worst) {
     var p = worst.corners.map(function (v) { return new THREE.Vector3(qp[3 * v], qp[3 * v + 1], qp[3 * v + 2]); });
     var centre = p[0].clone().add(p[1]).add(p[2]).add(p[3]).multiplyScalar(0.25);
@@ -286,6 +287,9 @@ inline const char* html_viewer_script()
     render();
   });
 
+  // The colour bar goes with the quad mesh.
+  function showColourBar(shown) { document.getElementById('pvf-colour-bar').style.display = shown ? 'block' : 'none'; }
+
   // One check box per layer.
   var panel = document.getElementById('pvf-layers');
   Object.keys(layers).forEach(function (name) {
@@ -294,7 +298,11 @@ inline const char* html_viewer_script()
     box.id = 'pvf-layer-' + name;
     box.checked = layer.shown;
     layer.object.visible = layer.shown;
-    box.addEventListener('change', function () { layer.object.visible = box.checked; render(); });
+    box.addEventListener('change', function () {
+      layer.object.visible = box.checked;
+      if (name === 'quads') showColourBar(box.checked);
+      render();
+    });
     row.appendChild(box);
     row.appendChild(document.createTextNode(' ' + layer.label));
     panel.appendChild(row);
@@ -302,8 +310,7 @@ inline const char* html_viewer_script()
 
   // The colour bar of the planarity, from the writer's stops.
   if (hasQuads) {
-    var bar = document.getElementById('pvf-colour-bar');
-    bar.style.display = 'block';
+    showColourBar(layers.quads.shown);
     var stops = data.quads.colour_stops.map(function (s) {
       return 'rgb(' + s[1] + ',' + s[2] + ',' + s[3] + ') ' + (100 * s[0]) + '%';
     });
@@ -315,13 +322,13 @@ inline const char* html_viewer_script()
 
   render();
   // What was drawn, for the tests (and anyone curious).
-  if (hasQuads) {
+)PVF"
+    R"PVF(  if (hasQuads && layers.quads.shown) {
     var r = document.getElementById('pvf-colour-ramp').getBoundingClientRect();
     status.setAttribute('data-colour-bar', [r.left, r.top, r.width, r.height].join(','));
   }
   status.setAttribute('data-layers', Object.keys(layers).filter(function (n) { return layers[n].shown; }).join(','));
-)PVF"
-    R"PVF(  if (worst) {
+  if (worst) {
     status.setAttribute('data-worst-face', String(worst.face));
     status.setAttribute('data-worst-planarity', String(worst.planarity));
   }

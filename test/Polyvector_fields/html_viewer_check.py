@@ -30,7 +30,9 @@ pipeline: conjugate field, map, quad mesh, planarized), writing the page
   of the bar (position at least 0.85 on it), red.
 
 Only the Python standard library is used (PNG decoded with zlib).
-usage: html_viewer_check.py EXE CHROMIUM DATA_DIR WORK_DIR [SCREENSHOT_COPY]
+usage: html_viewer_check.py EXE CHROMIUM WORK_DIR [SCREENSHOT_COPY]
+(SCREENSHOT_COPY: where to copy the screenshot of the whole view, as the
+README's first picture doc/Polyvector_fields/fig/viewer_inspired.png was made.)
 """
 
 import html
@@ -134,10 +136,10 @@ def normalised(colour):
 
 
 def main():
-    if len(sys.argv) < 5:
-        fail("usage: html_viewer_check.py EXE CHROMIUM DATA_DIR WORK_DIR [SCREENSHOT_COPY]")
-    exe, browser, data_dir, work = [os.path.abspath(a) if i != 1 else a for i, a in enumerate(sys.argv[1:5])]
-    copy = sys.argv[5] if len(sys.argv) > 5 else None
+    if len(sys.argv) < 4:
+        fail("usage: html_viewer_check.py EXE CHROMIUM WORK_DIR [SCREENSHOT_COPY]")
+    exe, browser, work = os.path.abspath(sys.argv[1]), sys.argv[2], os.path.abspath(sys.argv[3])
+    copy = sys.argv[4] if len(sys.argv) > 4 else None
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     page, ply = os.path.join(work, "inspired.html"), os.path.join(work, "inspired_quads.ply")

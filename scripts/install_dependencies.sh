@@ -12,13 +12,16 @@
 #   bash scripts/install_dependencies.sh --doc    also matplotlib, to redraw the manual's figures
 #                                                 (doc/Polyvector_fields/make_figures.py)
 # doxygen is always installed: the test doc_polyvector_fields_doxygen needs it.
+# libjs-three (three.js, copied into the pages of --out-html) and chromium
+# (the browser of the test cli_html_viewer_browser) too.
 set -euo pipefail
 
 # pybind11-dev python3-dev python3-numpy: the Python module (python/);
 # python3-pytest: its tests.
 packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libgtest-dev
           libbenchmark-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libopenmesh-dev doxygen
-          pybind11-dev python3-dev python3-numpy python3-pytest)
+          pybind11-dev python3-dev python3-numpy python3-pytest
+          libjs-three chromium)
 for arg in "$@"; do
   case "$arg" in
     --doc) packages+=(python3-matplotlib) ;;

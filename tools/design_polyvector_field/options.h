@@ -94,11 +94,17 @@ const char* usage =
   "  --max-surface-distance F with --planarize: a vertex may move at most F mean quad edges away\n"
   "                           from the surface (default 0.05); a planarization that needs more is\n"
   "                           reported and the quad mesh is written as extracted\n"
-  "output (default when none is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
+  "output (default when none of the first five is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
   "  --out-vtk FILE           write a legacy VTK file for ParaView\n"
   "  --out-mesh FILE          write the (repaired) triangle mesh the outputs refer to, as OFF\n"
+  "  --out-html FILE.html     write a self-contained web page (works offline) that shows the surface,\n"
+  "                           the field, the singularities, the constrained faces and, with\n"
+  "                           --quad-mesh, the quads coloured by planarity; it copies three.js from\n"
+  "                           Debian's libjs-three (/usr/share/javascript/three) into the page\n"
+  "  --out-ply FILE.ply       with --quad-mesh: write the quad mesh as PLY with each face's planarity\n"
+  "                           (property quality) and its colour (blue planar to red worst), for MeshLab\n"
   "  --help                   print this help\n"
   "Without --mesh: the bundled <data>/inspired_mesh.obj and, unless other constraints are given,\n"
   "its 84 constraints (--dmat-b/--dmat-bc), as a frame field (--degree 4 --sign-symmetric).\n"
@@ -140,6 +146,7 @@ struct Options
   std::size_t quads = 0;   // --quads N: the edge length from the area; 0: not given
   double singularity_separation = 1;  // in quads
   std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
+  std::string out_html, out_ply;  // --out-html, --out-ply
   double planarity_threshold = 0;  // 0: no planarization
   double max_surface_distance = 0.05;  // --max-surface-distance, in mean quad edges
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
@@ -284,6 +291,8 @@ Options parse_options(int argc, char** argv)
     else if(flag == "--out-singularities") o.out_singularities = line.text();
     else if(flag == "--out-vtk") o.out_vtk = line.text();
     else if(flag == "--out-mesh") o.out_mesh = line.text();
+    else if(flag == "--out-html") o.out_html = line.text();
+    else if(flag == "--out-ply") o.out_ply = line.text();
     else if(flag == "--parametrize") o.parametrize = true;
     else if(flag == "--edge-length") o.edge_length = line.number(0, 1e300, true);
     else if(flag == "--quads") o.quads = line.integer(1, 1000000000ull);
@@ -369,15 +378,17 @@ Options parse_options(int argc, char** argv)
     throw Failure("--max-surface-distance goes with --planarize", 2);
   if(o.planarity_threshold > 0 && o.out_quads.empty())
     throw Failure("--planarize goes with --quad-mesh", 2);
+  if(!o.out_ply.empty() && o.out_quads.empty())
+    throw Failure("--out-ply writes the quad mesh with its planarity: it goes with --quad-mesh", 2);
   if(!o.out_quads.empty())
   {
     const std::string extension = fs::path(o.out_quads).extension().string();
     if(extension != ".off" && extension != ".obj")
       throw Failure("--quad-mesh '" + o.out_quads + "': the file name must end in .off or .obj", 2);
   }
-  // The field's default outputs unless one of them is named (--out-param and
-  // --quad-mesh come in addition).
-  if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty() && o.out_mesh.empty())
+  // The field's default outputs unless one of them (or the page) is named
+  // (--out-param, --quad-mesh and --out-ply come in addition).
+  if(o.out_field.empty() && o.out_singularities.empty() && o.out_vtk.empty() && o.out_mesh.empty() && o.out_html.empty())
   {
     const std::string stem = "output/" + fs::path(o.mesh).stem().string();
     o.out_field = stem + ".rawfield";

@@ -41,7 +41,8 @@ public:
     const std::pair<const char*, const std::string*> outputs[] = {
       { "--out-field", &o.out_field }, { "--out-singularities", &o.out_singularities },
       { "--out-vtk", &o.out_vtk }, { "--out-mesh", &o.out_mesh }, { "--out-param", &o.out_param },
-      { "--quad-mesh", &o.out_quads }, { "the quad-mesh VTK file of --quad-mesh and --out-vtk", &o.out_quads_vtk } };
+      { "--quad-mesh", &o.out_quads }, { "the quad-mesh VTK file of --quad-mesh and --out-vtk", &o.out_quads_vtk },
+      { "--out-html", &o.out_html }, { "--out-ply", &o.out_ply } };
     for(const auto& output : outputs)
     {
       const std::string& path = *output.second;
@@ -85,15 +86,17 @@ public:
   // Writes the content of `path` through `write` (which returns an
   // Error_code) into a fresh temporary file beside it, streamed: no copy of a
   // large output is kept in memory. publish() puts them all into place.
+  // `detail`, if not empty once `write` failed, replaces the code's message.
   template <typename Write>
-  void write(const std::string& path, const Write& write, const std::string& what)
+  void write(const std::string& path, const Write& write, const std::string& what,
+             const std::string& detail = std::string())
   {
     const PVF::Error_code code = m_files.stage(path, write);
     if(code == PVF::Error_code::SUCCESS)
       return;
     if(!m_files.error_message().empty())
       throw Failure(m_files.error_message());
-    check(code, "writing " + what);
+    check(code, "writing " + what, detail);
   }
 
   // Renames every temporary file over its destination. If any step fails,

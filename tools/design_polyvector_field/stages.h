@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
+#include <CGAL/Polyvector_fields/IO/html_viewer.h>
 #include <CGAL/Polyvector_fields/IO/integer_grid_map.h>
 #include <CGAL/Polyvector_fields/IO/map_constraints_to_repaired_mesh.h>
 #include <CGAL/Polyvector_fields/IO/quad_mesh.h>
@@ -665,6 +666,23 @@ void write_outputs(const Options& o, const Mesh& tm, const Constraint_set& const
   if(!o.out_quads_vtk.empty())
     outputs.write(o.out_quads_vtk, [&](std::ostream& s) { return PVF::IO::write_quad_mesh_VTK(s, q.quads); },
                   o.out_quads_vtk);
+  if(!o.out_ply.empty())
+    outputs.write(o.out_ply, [&](std::ostream& s) { return PVF::IO::write_quad_mesh_PLY(s, q.quads); }, o.out_ply);
+  if(!o.out_html.empty())
+  {
+    std::vector<Face> constrained;
+    for(const Constraint& c : constraints.list)
+      constrained.push_back(c.face);
+    std::string message;
+    const auto np = PVF::parameters::page_title(fs::path(o.mesh).filename().string(),
+                                                PVF::parameters::constrained_faces(constrained,
+                                                                                   PVF::parameters::error_message(message)));
+    outputs.write(o.out_html, [&](std::ostream& s) {
+                    return q.computed ? PVF::IO::write_HTML_viewer(s, tm, a.roots, o.degree, a.singularities,
+                                                                   PVF::parameters::quad_mesh(q.quads, np))
+                                      : PVF::IO::write_HTML_viewer(s, tm, a.roots, o.degree, a.singularities, np);
+                  }, o.out_html, message);
+  }
   outputs.publish();
   clock.lap("write");
 }

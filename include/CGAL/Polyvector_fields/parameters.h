@@ -123,6 +123,19 @@ CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)
 CGAL_PVF_ADD_NAMED_PARAMETER(anisotropy_threshold_t, anisotropy_threshold, anisotropy_threshold)
 CGAL_PVF_ADD_NAMED_PARAMETER(constrained_fraction_t, constrained_fraction, constrained_fraction)
 
+// The HTML viewer (`IO::write_HTML_viewer()`) and the PLY writer of quad meshes.
+// `std::string`: the folder of Debian's libjs-three (three.js r111), whose `three.min.js` and
+// `examples/js/controls/OrbitControls.js` are copied into the page; default `/usr/share/javascript/three`.
+CGAL_PVF_ADD_NAMED_PARAMETER(three_js_directory_t, three_js_directory, three_js_directory)
+// `std::string`: the title of the page, before its summary figures; default "CGAL Polyvector Fields".
+CGAL_PVF_ADD_NAMED_PARAMETER(page_title_t, page_title, page_title)
+// `std::size_t >= 1`: above this many faces, the page draws the field on a regular subsample of
+// about this many faces; default 20000.
+CGAL_PVF_ADD_NAMED_PARAMETER(max_glyph_faces_t, max_glyph_faces, max_glyph_faces)
+// `double > 0`: the planarity drawn in the red of the colour map (larger values too); default the
+// largest planarity of the quad mesh (1% if every quad is planar).
+CGAL_PVF_ADD_NAMED_PARAMETER(planarity_colour_range_t, planarity_colour_range, planarity_colour_range)
+
 // Parameters that refer to an object of the caller instead of copying it:
 // the named parameter holds its address, and the object must outlive the call.
 #define CGAL_PVF_ADD_REFERENCE_PARAMETER(TAG_TYPE, TAG_VALUE, FUNCTION, ...)                  \
@@ -158,6 +171,7 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal_np {
 enum constrained_faces_t { constrained_faces };
+enum quad_mesh_t { quad_mesh };
 } // namespace internal_np
 namespace parameters {
 
@@ -175,6 +189,24 @@ constrained_faces(const std::vector<FaceDescriptor>& faces, const CGAL::Named_fu
 {
   return CGAL::Named_function_parameters<const std::vector<FaceDescriptor>*, internal_np::constrained_faces_t,
                                          CGAL::Named_function_parameters<T, Tag, Base> >(&faces, np);
+}
+
+// The quad mesh shown by `IO::write_HTML_viewer()`: a reference to the caller's polygon mesh,
+// which must outlive the call.
+template <typename PolygonMesh>
+CGAL::Named_function_parameters<const PolygonMesh*, internal_np::quad_mesh_t>
+quad_mesh(const PolygonMesh& pm)
+{
+  return CGAL::Named_function_parameters<const PolygonMesh*, internal_np::quad_mesh_t>(&pm);
+}
+
+template <typename PolygonMesh, typename T, typename Tag, typename Base>
+CGAL::Named_function_parameters<const PolygonMesh*, internal_np::quad_mesh_t,
+                                CGAL::Named_function_parameters<T, Tag, Base> >
+quad_mesh(const PolygonMesh& pm, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return CGAL::Named_function_parameters<const PolygonMesh*, internal_np::quad_mesh_t,
+                                         CGAL::Named_function_parameters<T, Tag, Base> >(&pm, np);
 }
 
 } // namespace parameters

@@ -45,6 +45,8 @@
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 #include <CGAL/Polyvector_fields/select_sharp_edge_constraints.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>
+#include <CGAL/Polyvector_fields/IO/html_viewer.h>
+#include <CGAL/Polyvector_fields/IO/quad_mesh.h>
 #include <CGAL/Polyvector_fields/IO/read_triangle_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -247,11 +249,88 @@ std::size_t read_count(py::handle h, const std::string& name)
   return std::size_t(v);
 }
 
-// Checks that every entry of `m` is an index into 0..n-1.
-void check_indices(const Matrix_i& m, std::size_t n, const std::string& name, const std::string& of_what)
+// A whole-number argument (a Python or numpy integer, not a bool) in low..high,
+// refused with its name and `code` otherwise (pybind11 would raise its own
+// TypeError for a negative value given to a std::size_t).
+std::int64_t read_whole(py::handle h, const std::string& name, std::int64_t low, std::int64_t high,
+                        const std::string& code = "INVALID_PARAMETER")
+{
+  long long v = 0;
+  bool integer = !h.is_none() && !py::isinstance<py::bool_>(h) && !PyFloat_Check(h.ptr()) && PyIndex_Check(h.ptr());
+  if(integer)
+  {
+    try
+    {
+      v = h.cast<long long>();
+    }
+    catch(const py::cast_error&)
+    {
+      integer = false;  // beyond long long
+      PyErr_Clear();
+    }
+  }
+  if(!integer)
+    throw Failure(name + ": expected an integer, got " + std::string(py::str(py::repr(h))) + " (" + code + ")", code);
+  if(v < low || v > high)
+    throw Failure(name + ": " + std::to_string(v) + " is not in " + std::to_string(low) + ".." + std::to_string(high) +
+                    " (" + code + ")",
+                  code);
+  return std::int64_t(v);
+}
+
+// A number argument (not None, not a bool), refused with its name otherwise.
+double read_real_number(py::handle h, const std::string& name)
+{
+  if(!h.is_none() && !py::isinstance<py::bool_>(h))
+  {
+    try
+    {
+      return h.cast<double>();
+    }
+    catch(const py::cast_error&)
+    {
+      PyErr_Clear();
+    }
+  }
+  throw Failure(name + ": expected a number, got " + std::string(py::str(py::repr(h))) + " (INVALID_PARAMETER)",
+                "INVALID_PARAMETER");
+}
+
+// A yes-or-no argument: True or False (Python's or numpy's bool), refused with its name otherwise.
+bool read_flag(py::handle h, const std::string& name)
+{
+  if(py::isinstance<py::bool_>(h) || py::isinstance(h, py::module_::import("numpy").attr("bool_")))
+    return h.cast<bool>();
+  throw Failure(name + ": expected True or False, got " + std::string(py::str(py::repr(h))) + " (INVALID_PARAMETER)",
+                "INVALID_PARAMETER");
+}
+
+// A text argument, refused with its name when it is not a str.
+std::string read_text(py::handle h, const std::string& name)
+{
+  if(py::isinstance<py::str>(h))
+    return h.cast<std::string>();
+  throw Failure(name + ": expected a string, got " + std::string(py::str(py::repr(h))) + " (INVALID_PARAMETER)",
+                "INVALID_PARAMETER");
+}
+
+// Checks that every entry of `m` is an index into 0..n-1; with `padded`, a row
+// may end with -1 entries (a polygon of fewer corners than the array has columns).
+void check_indices(const Matrix_i& m, std::size_t n, const std::string& name, const std::string& of_what,
+                   bool padded = false)
 {
   for(std::size_t k = 0; k < m.data.size(); ++k)
-    if(m.data[k] < 0 || std::uint64_t(m.data[k]) >= n)
+    if(padded && m.data[k] == -1)
+    {
+      const std::size_t row = k / m.cols, column = k % m.cols;
+      if(column < 3)
+        bad_array(name + " row " + std::to_string(row) + ": a polygon has at least 3 corners (-1 in column " +
+                  std::to_string(column) + ")");
+      if(column + 1 < m.cols && m.data[k + 1] != -1)
+        bad_array(name + " row " + std::to_string(row) + ": -1 pads the end of a row only (column " +
+                  std::to_string(column) + " is -1, column " + std::to_string(column + 1) + " is not)");
+    }
+    else if(m.data[k] < 0 || std::uint64_t(m.data[k]) >= n)
       bad_array(name + "[" + std::to_string(k / m.cols) + ", " + std::to_string(k % m.cols) + "] = " +
                 std::to_string(m.data[k]) + " is not " + of_what + " (0.." + std::to_string(n) + "-1)");
 }
@@ -263,42 +342,20 @@ struct Mesh_arrays
   Matrix_i F;
 };
 
+// corners 0: polygons, at least 3 columns, rows padded at their end with -1.
 Mesh_arrays read_mesh_arrays(py::handle V, py::handle F, std::size_t corners = 3, const std::string& v_name = "V",
                              const std::string& f_name = "F")
 {
   Mesh_arrays m;
   m.V = read_real(V, v_name, 3);
   m.F = read_integer(F, f_name, corners);
+  if(corners == 0 && m.F.cols < 3)
+    bad_array(f_name + ": expected shape (n, k) with k >= 3 (polygons), got (" + std::to_string(m.F.rows) + ", " +
+              std::to_string(m.F.cols) + ")");
   if(m.F.rows == 0)
     throw Failure(f_name + ": the mesh has no face (EMPTY_MESH)", "EMPTY_MESH");
-  check_indices(m.F, m.V.rows, f_name, "a vertex of " + v_name);
+  check_indices(m.F, m.V.rows, f_name, "a vertex of " + v_name, corners == 0);
   return m;
-}
-
-// The mesh without the vertices that no face uses (their rows of V dropped, F
-// renumbered), for the stages whose output does not refer to the input's
-// vertices: an isolated vertex has no directions, and the quad extraction
-// would take it for a singular point off the integer grid.
-Mesh_arrays without_isolated_vertices(const Mesh_arrays& a)
-{
-  std::vector<std::int64_t> renumbered(a.V.rows, -1);
-  for(std::int64_t v : a.F.data)
-    renumbered[std::size_t(v)] = 0;
-  Mesh_arrays out;
-  out.V.cols = 3;
-  std::int64_t n = 0;
-  for(std::size_t i = 0; i < a.V.rows; ++i)
-    if(renumbered[i] == 0)
-    {
-      renumbered[i] = n++;
-      out.V.data.insert(out.V.data.end(), a.V.data.begin() + std::ptrdiff_t(3 * i),
-                        a.V.data.begin() + std::ptrdiff_t(3 * i + 3));
-    }
-  out.V.rows = std::size_t(n);
-  out.F = a.F;
-  for(std::int64_t& v : out.F.data)
-    v = renumbered[std::size_t(v)];
-  return out;
 }
 
 // Builds a Surface_mesh whose vertex i and face i are V's row i and F's row i.
@@ -309,10 +366,14 @@ void build_mesh(const Mesh_arrays& a, Mesh& tm, const std::string& f_name = "F")
   tm.reserve(Mesh::size_type(a.V.rows), Mesh::size_type(a.F.rows * 3), Mesh::size_type(a.F.rows));
   for(std::size_t i = 0; i < a.V.rows; ++i)
     tm.add_vertex(Point(a.V(i, 0), a.V(i, 1), a.V(i, 2)));
-  std::vector<Vertex> face(a.F.cols);
+  std::vector<Vertex> face;
   for(std::size_t f = 0; f < a.F.rows; ++f)
   {
-    for(std::size_t k = 0; k < a.F.cols; ++k)
+    std::size_t corners = a.F.cols;
+    while(a.F(f, corners - 1) == -1)  // the padding of a polygon row (checked: 3 corners at least)
+      --corners;
+    face.resize(corners);
+    for(std::size_t k = 0; k < corners; ++k)
     {
       face[k] = Vertex(Mesh::size_type(a.F(f, k)));
       for(std::size_t j = 0; j < k; ++j)
@@ -350,6 +411,23 @@ std::size_t corner_of(const Mesh& tm, const Matrix_i& F, std::size_t f, Halfedge
   throw std::logic_error("a halfedge of a face whose target is not one of its vertices");
 }
 
+// Calls visit(h, bundle_slot, array_slot) for every corner of every face: h
+// the halfedge of the corner, bundle_slot = 3 i + j for the j-th corner of the
+// bundle's i-th face (the order of the library's per-corner results),
+// array_slot = 3 f + k for the corner F(f, k) of face f (row f of the arrays).
+template <typename Visit>
+void for_each_corner(const Bundle& bundle, const Mesh& tm, const Matrix_i& F, const Visit& visit)
+{
+  for(std::size_t i = 0; i < bundle.number_of_faces(); ++i)
+  {
+    const Face f = bundle.face(i);
+    const std::size_t row = std::size_t(f);
+    const auto corners = corner_halfedges(tm, f);
+    for(std::size_t j = 0; j < 3; ++j)
+      visit(corners[j], 3 * i + j, 3 * row + corner_of(tm, F, row, corners[j]));
+  }
+}
+
 // The bundle of tm, checked.
 void check_bundle(const Bundle& bundle, const std::string& f_name = "F")
 {
@@ -381,6 +459,54 @@ py::array_t<T> to_numpy_1d(const std::vector<T>& data)
   py::array_t<T> a(py::ssize_t(data.size()));
   std::copy(data.begin(), data.end(), a.mutable_data());
   return a;
+}
+
+// The vertices and faces of a mesh as row-major arrays, vertices numbered
+// 0..n-1 in the order of vertices(m) (removed ones skipped). The faces have
+// `width` columns, the largest number of corners; rows of smaller faces end
+// with -1. `index` maps a vertex descriptor to its row.
+struct Mesh_rows
+{
+  std::vector<double> V;
+  std::vector<std::int64_t> F;
+  std::vector<std::int64_t> index;
+  std::size_t width = 3;
+  std::size_t smallest = 3;  // the fewest corners of a face
+  bool padded() const { return smallest != width; }
+};
+
+Mesh_rows mesh_rows(const Mesh& m)
+{
+  Mesh_rows r;
+  r.index.assign(m.number_of_vertices() + m.number_of_removed_vertices(), -1);
+  std::int64_t n = 0;
+  for(Vertex v : vertices(m))
+  {
+    r.index[std::size_t(v)] = n++;
+    const Point& p = m.point(v);
+    r.V.insert(r.V.end(), { p.x(), p.y(), p.z() });
+  }
+  r.width = 0;
+  r.smallest = std::numeric_limits<std::size_t>::max();
+  for(Face f : faces(m))
+  {
+    const std::size_t d = std::size_t(CGAL::degree(f, m));
+    r.width = (std::max)(r.width, d);
+    r.smallest = (std::min)(r.smallest, d);
+  }
+  if(r.width == 0)
+    r.width = r.smallest = 3;
+  for(Face f : faces(m))
+  {
+    std::size_t k = 0;
+    for(Vertex v : vertices_around_face(m.halfedge(f), m))
+    {
+      r.F.push_back(r.index[std::size_t(v)]);
+      ++k;
+    }
+    r.F.insert(r.F.end(), r.width - k, -1);
+  }
+  return r;
 }
 
 // ---------------------------------------------------------------------------
@@ -607,8 +733,9 @@ py::dict design_info(const Design& d, const Field& field, std::size_t components
 // The bound functions
 // ---------------------------------------------------------------------------
 
-py::tuple read_triangle_mesh(const std::string& filename, bool repair)
+py::tuple read_triangle_mesh(const std::string& filename, py::handle repair_arg)
 {
+  const bool repair = read_flag(repair_arg, "repair");
   Mesh tm;
   PVF::IO::Mesh_repair_result report;
   std::vector<double> V;
@@ -619,17 +746,9 @@ py::tuple read_triangle_mesh(const std::string& filename, bool repair)
     const PVF::Error_code code = PVF::IO::read_triangle_mesh(
       filename, tm, report, PVF::parameters::repair(repair, PVF::parameters::error_message(message)));
     check(code, "mesh '" + filename + "'", message);
-    std::vector<std::int64_t> index(tm.number_of_vertices() + tm.number_of_removed_vertices(), -1);
-    std::int64_t n = 0;
-    for(Vertex v : vertices(tm))
-    {
-      index[std::size_t(v)] = n++;
-      const Point& p = tm.point(v);
-      V.insert(V.end(), { p.x(), p.y(), p.z() });
-    }
-    for(Face f : faces(tm))
-      for(Vertex v : vertices_around_face(tm.halfedge(f), tm))
-        F.push_back(index[std::size_t(v)]);
+    Mesh_rows rows = mesh_rows(tm);
+    V = std::move(rows.V);
+    F = std::move(rows.F);
   }
   py::dict info;
   info["file_vertices"] = report.file_vertices;
@@ -645,12 +764,14 @@ py::tuple read_triangle_mesh(const std::string& filename, bool repair)
   return py::make_tuple(to_numpy(V, V.size() / 3, 3), to_numpy(F, F.size() / 3, 3), info);
 }
 
-py::tuple design_field(py::handle V, py::handle F, py::handle b, py::handle bc, std::size_t degree,
-                       bool sign_symmetric, py::handle soft, const std::string& smoothness_weights)
+py::tuple design_field(py::handle V, py::handle F, py::handle b, py::handle bc, py::handle degree_arg,
+                       py::handle sign_symmetric_arg, py::handle soft, py::handle smoothness_weights)
 {
+  const std::size_t degree = std::size_t(read_whole(degree_arg, "degree", 1, 32, "INVALID_DEGREE"));
+  const bool sign_symmetric = read_flag(sign_symmetric_arg, "sign_symmetric");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const Constraint_arrays ca = read_constraints(b, bc, soft, a.F.rows);
-  const PVF::Smoothness_weights weights = read_weights(smoothness_weights);
+  const PVF::Smoothness_weights weights = read_weights(read_text(smoothness_weights, "smoothness_weights"));
   std::vector<double> X;
   Design d;
   std::optional<Field> field;
@@ -674,12 +795,14 @@ py::tuple design_field(py::handle V, py::handle F, py::handle b, py::handle bc, 
 }
 
 py::tuple frame_field(py::handle V, py::handle F, py::handle b, py::handle bc, py::handle curvature_constraints,
-                      bool conjugate, py::handle angle_bound, py::handle soft, double orthogonality_weight,
-                      py::handle number_of_iterations, py::handle tolerance, const std::string& smoothness_weights)
+                      py::handle conjugate_arg, py::handle angle_bound, py::handle soft, py::handle orthogonality_weight_arg,
+                      py::handle number_of_iterations, py::handle tolerance, py::handle smoothness_weights)
 {
+  const bool conjugate = read_flag(conjugate_arg, "conjugate");
+  const double orthogonality_weight = read_real_number(orthogonality_weight_arg, "orthogonality_weight");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const Constraint_arrays ca = read_constraints(b, bc, soft, a.F.rows);
-  const PVF::Smoothness_weights weights = read_weights(smoothness_weights);
+  const PVF::Smoothness_weights weights = read_weights(read_text(smoothness_weights, "smoothness_weights"));
   const std::optional<double> fraction = read_number(curvature_constraints, "curvature_constraints");
   const std::optional<double> bound = read_number(angle_bound, "angle_bound");
   const std::size_t iterations = read_count(number_of_iterations, "number_of_iterations");
@@ -824,7 +947,7 @@ Field_input read_field_input(py::handle V, py::handle F, py::handle X, py::handl
   in.X = read_real(X, "X", 0);
   in.N = degree_of(in.X, in.mesh.F.rows);
   in.sign_symmetric =
-    sign_symmetric.is_none() ? roots_are_sign_symmetric(in.X, in.N) : sign_symmetric.cast<bool>();
+    sign_symmetric.is_none() ? roots_are_sign_symmetric(in.X, in.N) : read_flag(sign_symmetric, "sign_symmetric");
   if(in.sign_symmetric && in.N % 2 != 0)
     throw Failure("X: sign symmetry needs an even number of vectors per face, X has " + std::to_string(in.N) +
                     " (INVALID_DEGREE)",
@@ -930,9 +1053,13 @@ std::optional<Matrix_i> read_optional_features(py::handle features, std::size_t 
   return E;
 }
 
-py::tuple sharp_edges(py::handle V, py::handle F, double angle, bool boundary_alignment,
-                      double minimum_feature_length, std::size_t vectors_per_face)
+py::tuple sharp_edges(py::handle V, py::handle F, py::handle angle_arg, py::handle boundary_alignment_arg,
+                      py::handle minimum_feature_length_arg, py::handle vectors_per_face_arg)
 {
+  const double angle = read_real_number(angle_arg, "angle");
+  const bool boundary_alignment = read_flag(boundary_alignment_arg, "boundary_alignment");
+  const double minimum_feature_length = read_real_number(minimum_feature_length_arg, "minimum_feature_length");
+  const std::size_t vectors_per_face = std::size_t(read_whole(vectors_per_face_arg, "vectors_per_face", 1, 2));
   const Mesh_arrays a = read_mesh_arrays(V, F);
   std::vector<std::int64_t> E, b;
   std::vector<double> bc;
@@ -970,9 +1097,11 @@ py::tuple sharp_edges(py::handle V, py::handle F, double angle, bool boundary_al
   return py::make_tuple(to_numpy(E, E.size() / 2, 2), to_numpy_1d(b), to_numpy(bc, b.size(), 3 * width), info);
 }
 
-py::tuple refine_for_quad_size(py::handle V, py::handle F, double quad_size, py::handle features,
-                               bool boundary_alignment)
+py::tuple refine_for_quad_size(py::handle V, py::handle F, py::handle quad_size_arg, py::handle features,
+                               py::handle boundary_alignment_arg)
 {
+  const double quad_size = read_real_number(quad_size_arg, "quad_size");
+  const bool boundary_alignment = read_flag(boundary_alignment_arg, "boundary_alignment");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const std::optional<Matrix_i> E = read_optional_features(features, a.V.rows);
   std::vector<double> V2;
@@ -990,17 +1119,10 @@ py::tuple refine_for_quad_size(py::handle V, py::handle F, double quad_size, py:
             ? PVF::refine_for_quad_size(tm, quad_size, origin, np.edge_is_constrained_map(feature_map))
             : PVF::refine_for_quad_size(tm, quad_size, origin),
           "refinement", "quad_size " + std::to_string(quad_size));
-    std::vector<std::int64_t> index(tm.number_of_vertices() + tm.number_of_removed_vertices(), -1);
-    std::int64_t n = 0;
-    for(Vertex v : vertices(tm))
-    {
-      index[std::size_t(v)] = n++;
-      const Point& p = tm.point(v);
-      V2.insert(V2.end(), { p.x(), p.y(), p.z() });
-    }
-    for(Face f : faces(tm))
-      for(Vertex v : vertices_around_face(tm.halfedge(f), tm))
-        F2.push_back(index[std::size_t(v)]);
+    Mesh_rows rows = mesh_rows(tm);
+    V2 = std::move(rows.V);
+    F2 = std::move(rows.F);
+    const std::vector<std::int64_t>& index = rows.index;
     for(Edge e : edges(tm))
       if(feature_map[e])
       {
@@ -1015,9 +1137,11 @@ py::tuple refine_for_quad_size(py::handle V, py::handle F, double quad_size, py:
 }
 
 py::tuple integer_grid_map(py::handle V, py::handle F, py::handle X, py::handle edge_length, py::handle quads,
-                           py::handle features, bool boundary_alignment, py::handle singularity_cancellation_distance,
-                           bool stiffening_keeps_integers)
+                           py::handle features, py::handle boundary_alignment_arg,
+                           py::handle singularity_cancellation_distance, py::handle stiffening_keeps_integers_arg)
 {
+  const bool boundary_alignment = read_flag(boundary_alignment_arg, "boundary_alignment");
+  const bool stiffening_keeps_integers = read_flag(stiffening_keeps_integers_arg, "stiffening_keeps_integers");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const Matrix_d Xm = read_real(X, "X", 0);
   const std::size_t N = degree_of(Xm, a.F.rows);
@@ -1073,24 +1197,15 @@ py::tuple integer_grid_map(py::handle V, py::handle F, py::handle X, py::handle 
       UV.resize(a.F.rows * 6);
       FUV.resize(a.F.rows * 3);
       transitions.resize(a.F.rows * 9);
-      for(std::size_t i = 0; i < bundle.number_of_faces(); ++i)
-      {
-        const Face f = bundle.face(i);
-        const std::size_t row = std::size_t(f);
-        const auto corners = corner_halfedges(tm, f);
-        for(std::size_t j = 0; j < 3; ++j)
-        {
-          const std::size_t k = corner_of(tm, a.F, row, corners[j]);
-          const std::array<double, 2>& value = uv[corners[j]];
-          UV[(3 * row + k) * 2] = value[0];
-          UV[(3 * row + k) * 2 + 1] = value[1];
-          FUV[3 * row + k] = std::int64_t(3 * row + k);
-          const PVF::Seam_transition& t = r.seam_transitions[3 * i + j];
-          transitions[(3 * row + k) * 3] = t.rotation;
-          transitions[(3 * row + k) * 3 + 1] = t.translation[0];
-          transitions[(3 * row + k) * 3 + 2] = t.translation[1];
-        }
-      }
+      for_each_corner(bundle, tm, a.F, [&](Halfedge h, std::size_t slot, std::size_t c) {
+        UV[2 * c] = uv[h][0];
+        UV[2 * c + 1] = uv[h][1];
+        FUV[c] = std::int64_t(c);
+        const PVF::Seam_transition& t = r.seam_transitions[slot];
+        transitions[3 * c] = t.rotation;
+        transitions[3 * c + 1] = t.translation[0];
+        transitions[3 * c + 2] = t.translation[1];
+      });
     }
   }
   if(code != PVF::Error_code::SUCCESS)
@@ -1116,34 +1231,11 @@ py::tuple integer_grid_map(py::handle V, py::handle F, py::handle X, py::handle 
   return py::make_tuple(to_numpy(UV, 3 * a.F.rows, 2), to_numpy(FUV, a.F.rows, 3), info);
 }
 
-// Extracts Vq, Fq from a polygon mesh of quads.
-void quads_to_arrays(const Mesh& qm, std::vector<double>& Vq, std::vector<std::int64_t>& Fq)
+py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, py::handle seam_transitions,
+                    py::handle keep_trimmed_boundary)
 {
-  std::vector<std::int64_t> index(qm.number_of_vertices() + qm.number_of_removed_vertices(), -1);
-  std::int64_t n = 0;
-  for(Vertex v : vertices(qm))
-  {
-    index[std::size_t(v)] = n++;
-    const Point& p = qm.point(v);
-    Vq.insert(Vq.end(), { p.x(), p.y(), p.z() });
-  }
-  for(Face f : faces(qm))
-  {
-    std::size_t k = 0;
-    for(Vertex v : vertices_around_face(qm.halfedge(f), qm))
-    {
-      Fq.push_back(index[std::size_t(v)]);
-      ++k;
-    }
-    if(k != 4)
-      throw Failure("quad_mesh: the extraction made a face of " + std::to_string(k) + " vertices (NON_QUAD_FACE)",
-                    "NON_QUAD_FACE");
-  }
-}
-
-py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, py::handle seam_transitions)
-{
-  const Mesh_arrays a = without_isolated_vertices(read_mesh_arrays(V, F));
+  const bool trimmed = read_flag(keep_trimmed_boundary, "keep_trimmed_boundary");
+  const Mesh_arrays a = read_mesh_arrays(V, F);
   const Matrix_d UVm = read_real(UV, "UV", 2);
   const Matrix_i FUVm = read_integer(FUV, "FUV", 3);
   if(FUVm.rows != a.F.rows)
@@ -1161,8 +1253,7 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
     auto c = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(t);
     T.emplace(c.data(), c.data() + c.size());
   }
-  std::vector<double> Vq;
-  std::vector<std::int64_t> Fq;
+  Mesh_rows q;
   PVF::Quad_extraction_result r;
   PVF::Error_code code;
   {
@@ -1175,33 +1266,32 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
     PVF::Integer_grid_map_result map;
     if(T)
       map.seam_transitions.resize(3 * a.F.rows);
-    for(std::size_t i = 0; i < bundle.number_of_faces(); ++i)
-    {
-      const Face f = bundle.face(i);
-      const std::size_t row = std::size_t(f);
-      const auto corners = corner_halfedges(tm, f);
-      for(std::size_t j = 0; j < 3; ++j)
+    for_each_corner(bundle, tm, a.F, [&](Halfedge h, std::size_t slot, std::size_t c) {
+      const std::size_t row_of_uv = std::size_t(FUVm.data[c]);
+      uv[h] = { UVm(row_of_uv, 0), UVm(row_of_uv, 1) };
+      if(T)
       {
-        const std::size_t k = corner_of(tm, a.F, row, corners[j]);
-        const std::size_t c = std::size_t(FUVm(row, k));
-        uv[corners[j]] = { UVm(c, 0), UVm(c, 1) };
-        if(T)
-        {
-          const std::int64_t* t = T->data() + (3 * row + k) * 3;
-          if(t[0] < 0 || t[0] > 3)
-            throw Failure("seam_transitions[" + std::to_string(row) + ", " + std::to_string(k) +
-                            "]: rotation must be in 0..3 (NOT_AN_INTEGER_GRID_MAP)",
-                          "NOT_AN_INTEGER_GRID_MAP");
-          PVF::Seam_transition& s = map.seam_transitions[3 * i + j];
-          s.rotation = int(t[0]);
-          s.translation = { t[1], t[2] };
-        }
+        const std::int64_t* t = T->data() + 3 * c;
+        if(t[0] < 0 || t[0] > 3)
+          throw Failure("seam_transitions[" + std::to_string(c / 3) + ", " + std::to_string(c % 3) +
+                          "]: rotation must be in 0..3 (NOT_AN_INTEGER_GRID_MAP)",
+                        "NOT_AN_INTEGER_GRID_MAP");
+        PVF::Seam_transition& s = map.seam_transitions[slot];
+        s.rotation = int(t[0]);
+        s.translation = { t[1], t[2] };
       }
-    }
+    });
     Mesh qm;
-    code = T ? PVF::extract_quad_mesh(bundle, uv, map, qm, r) : PVF::extract_quad_mesh(tm, uv, qm, r);
+    const auto np = PVF::parameters::keep_trimmed_boundary(trimmed);
+    code = T ? PVF::extract_quad_mesh(bundle, uv, map, qm, r, np) : PVF::extract_quad_mesh(tm, uv, qm, r, np);
     if(code == PVF::Error_code::SUCCESS)
-      quads_to_arrays(qm, Vq, Fq);
+    {
+      q = mesh_rows(qm);
+      if(!trimmed && (q.width != 4 || q.padded()))
+        throw Failure("quad_mesh: the extraction made a face of " +
+                        std::to_string(q.width != 4 ? q.width : q.smallest) + " vertices (NON_QUAD_FACE)",
+                      "NON_QUAD_FACE");
+    }
   }
   if(code != PVF::Error_code::SUCCESS)
   {
@@ -1219,8 +1309,9 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
   info["repaired_regions"] = r.repaired_regions;
   info["unfolded_quads"] = r.unfolded_quads;
   info["discarded_cells"] = r.discarded_cells;
+  info["trimmed_polygons"] = r.trimmed_polygons;
   info["time_total"] = r.time_total;
-  return py::make_tuple(to_numpy(Vq, Vq.size() / 3, 3), to_numpy(Fq, Fq.size() / 4, 4), info);
+  return py::make_tuple(to_numpy(q.V, q.V.size() / 3, 3), to_numpy(q.F, q.F.size() / q.width, q.width), info);
 }
 
 py::tuple quad_planarity(py::handle Vq, py::handle Fq)
@@ -1244,9 +1335,10 @@ py::tuple quad_planarity(py::handle Vq, py::handle Fq)
   return py::make_tuple(to_numpy_1d(P), info);
 }
 
-py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, double threshold,
+py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py::handle threshold_arg,
                     py::handle max_distance_to_surface, py::handle number_of_iterations)
 {
+  const double threshold = read_real_number(threshold_arg, "threshold");
   const Mesh_arrays q = read_mesh_arrays(Vq, Fq, 4, "Vq", "Fq");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const std::optional<double> distance = read_number(max_distance_to_surface, "max_distance_to_surface");
@@ -1297,6 +1389,139 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, do
   return py::make_tuple(to_numpy(out, q.V.rows, 3), info);
 }
 
+// ---------------------------------------------------------------------------
+// Writers: the web page and the PLY file coloured by planarity
+// ---------------------------------------------------------------------------
+
+// The quads Vq, Fq (or polygons: rows of Fq padded at their end with -1), both or neither.
+std::optional<Mesh_arrays> read_optional_polygons(py::handle Vq, py::handle Fq)
+{
+  if(Vq.is_none() && Fq.is_none())
+    return std::nullopt;
+  if(Vq.is_none() || Fq.is_none())
+    bad_array(std::string(Vq.is_none() ? "Vq" : "Fq") + ": Vq and Fq go together (both or none)");
+  return read_mesh_arrays(Vq, Fq, 0, "Vq", "Fq");
+}
+
+std::optional<double> read_colour_range(py::handle h)
+{
+  if(h.is_none())
+    return std::nullopt;
+  return read_real_number(h, "planarity_colour_range");
+}
+
+// Calls `write` with `np`, to which the planarity colour range is added when one is given.
+template <typename NamedParameters, typename Write>
+PVF::Error_code with_colour_range(const std::optional<double>& range, const NamedParameters& np, const Write& write)
+{
+  return range ? write(PVF::parameters::planarity_colour_range(*range, np)) : write(np);
+}
+
+void write_html_viewer(const std::string& filename, py::handle V, py::handle F, py::handle X,
+                       py::handle singularities_arg, py::handle Vq, py::handle Fq, py::handle constrained_faces_arg,
+                       py::handle page_title, py::handle max_glyph_faces, py::handle planarity_colour_range,
+                       py::handle three_js_directory)
+{
+  const Mesh_arrays a = read_mesh_arrays(V, F);
+  const Matrix_d Xm = read_real(X, "X", 0);
+  const std::size_t N = degree_of(Xm, a.F.rows);
+  const std::optional<Mesh_arrays> q = read_optional_polygons(Vq, Fq);
+  std::optional<Matrix_i> S;
+  if(!singularities_arg.is_none())
+  {
+    S = read_integer(singularities_arg, "singularities", 2);
+    for(std::size_t i = 0; i < S->rows; ++i)
+    {
+      if((*S)(i, 0) < 0 || std::uint64_t((*S)(i, 0)) >= a.V.rows)
+        bad_array("singularities[" + std::to_string(i) + ", 0] = " + std::to_string((*S)(i, 0)) +
+                  " is not a vertex of V (0.." + std::to_string(a.V.rows) + "-1)");
+      if(std::abs((*S)(i, 1)) > (std::numeric_limits<int>::max)())
+        bad_array("singularities[" + std::to_string(i) + ", 1] = " + std::to_string((*S)(i, 1)) +
+                  " is out of the range of an index numerator");
+    }
+  }
+  std::optional<Matrix_i> C;
+  if(!constrained_faces_arg.is_none())
+  {
+    C = read_integer(constrained_faces_arg, "constrained_faces", 1, true);
+    check_indices(*C, a.F.rows, "constrained_faces", "a face of F");
+  }
+  const std::string title = page_title.is_none() ? std::string("CGAL Polyvector Fields")
+                                                 : read_text(page_title, "page_title");
+  const std::size_t glyph_faces =
+    max_glyph_faces.is_none()
+      ? PVF::IO::internal::default_max_glyph_faces
+      : std::size_t(read_whole(max_glyph_faces, "max_glyph_faces", 0, (std::numeric_limits<std::int64_t>::max)()));
+  const std::optional<double> range = read_colour_range(planarity_colour_range);
+  const std::string three_js = three_js_directory.is_none() ? std::string(PVF::IO::internal::default_three_js_directory())
+                                                            : read_text(three_js_directory, "three_js_directory");
+  PVF::Error_code code;
+  std::string message;
+  {
+    py::gil_scoped_release release;
+    Mesh tm;
+    build_mesh(a, tm);
+    auto roots = tm.add_property_map<Face, std::vector<Vector> >("f:pvf_py_roots").first;
+    for(Face f : faces(tm))
+      for(std::size_t k = 0; k < N; ++k)
+      {
+        const std::size_t row = std::size_t(f);
+        roots[f].push_back(Vector(Xm(row, 3 * k), Xm(row, 3 * k + 1), Xm(row, 3 * k + 2)));
+      }
+    std::vector<PVF::Singularity<Vertex> > singular;
+    if(S)
+      for(std::size_t i = 0; i < S->rows; ++i)
+        singular.push_back({ Vertex(Mesh::size_type((*S)(i, 0))), int((*S)(i, 1)) });
+    else
+    {
+      // As singularities() finds them.
+      const Bundle bundle(tm);
+      check_bundle(bundle);
+      Field field(bundle, N, roots_are_sign_symmetric(Xm, N));
+      field_from_roots(bundle, Xm, field);
+      check(PVF::compute_singularities(field, std::back_inserter(singular)), "singularities");
+    }
+    std::vector<Face> constrained;
+    if(C)
+      for(std::int64_t f : C->data)
+        constrained.push_back(Face(Mesh::size_type(f)));
+    namespace P = PVF::parameters;
+    const auto np = P::page_title(
+      title, P::max_glyph_faces(glyph_faces, P::three_js_directory(three_js, P::constrained_faces(
+                                                                                 constrained, P::error_message(message)))));
+    Mesh qm;
+    if(q)
+    {
+      build_mesh(*q, qm, "Fq");
+      code = with_colour_range(range, P::quad_mesh(qm, np), [&](const auto& all) {
+        return PVF::IO::write_HTML_viewer(filename, tm, roots, N, singular, all);
+      });
+    }
+    else
+      code = with_colour_range(range, np, [&](const auto& all) {
+        return PVF::IO::write_HTML_viewer(filename, tm, roots, N, singular, all);
+      });
+  }
+  // error_message holds the package's message when there is nothing more specific to say
+  check(code, "write_html_viewer '" + filename + "'", message == PVF::get_error_message(code) ? std::string() : message);
+}
+
+void write_quad_mesh_ply(const std::string& filename, py::handle Vq, py::handle Fq, py::handle planarity_colour_range)
+{
+  const Mesh_arrays q = read_mesh_arrays(Vq, Fq, 0, "Vq", "Fq");
+  const std::optional<double> range = read_colour_range(planarity_colour_range);
+  PVF::Error_code code;
+  {
+    py::gil_scoped_release release;
+    Mesh qm;
+    build_mesh(q, qm, "Fq");
+    code = with_colour_range(range, CGAL::parameters::default_values(), [&](const auto& np) {
+      return PVF::IO::write_quad_mesh_PLY(filename, qm, np);
+    });
+  }
+  check(code, "write_quad_mesh_ply '" + filename + "'");
+}
+
 } // namespace
 
 PYBIND11_MODULE(_core, m)
@@ -1326,6 +1551,12 @@ PYBIND11_MODULE(_core, m)
 
   using namespace pybind11::literals;
   m.def("read_triangle_mesh", &read_triangle_mesh, "filename"_a, "repair"_a = true);
+  m.def("write_html_viewer", &write_html_viewer, "filename"_a, "V"_a, "F"_a, "X"_a, "singularities"_a = py::none(),
+        "Vq"_a = py::none(), "Fq"_a = py::none(), "constrained_faces"_a = py::none(), "page_title"_a = py::none(),
+        "max_glyph_faces"_a = py::none(), "planarity_colour_range"_a = py::none(),
+        "three_js_directory"_a = py::none());
+  m.def("write_quad_mesh_ply", &write_quad_mesh_ply, "filename"_a, "Vq"_a, "Fq"_a,
+        "planarity_colour_range"_a = py::none());
   m.def("design_field", &design_field, "V"_a, "F"_a, "b"_a, "bc"_a, "degree"_a = 4, "sign_symmetric"_a = false,
         "soft"_a = py::none(), "smoothness_weights"_a = "uniform");
   m.def("frame_field", &frame_field, "V"_a, "F"_a, "b"_a = py::none(), "bc"_a = py::none(),
@@ -1341,7 +1572,8 @@ PYBIND11_MODULE(_core, m)
   m.def("integer_grid_map", &integer_grid_map, "V"_a, "F"_a, "X"_a, "edge_length"_a = py::none(),
         "quads"_a = py::none(), "features"_a = py::none(), "boundary_alignment"_a = false,
         "singularity_cancellation_distance"_a = py::none(), "stiffening_keeps_integers"_a = true);
-  m.def("quad_mesh", &quad_mesh, "V"_a, "F"_a, "UV"_a, "FUV"_a, "seam_transitions"_a = py::none());
+  m.def("quad_mesh", &quad_mesh, "V"_a, "F"_a, "UV"_a, "FUV"_a, "seam_transitions"_a = py::none(),
+        "keep_trimmed_boundary"_a = false);
   m.def("quad_planarity", &quad_planarity, "Vq"_a, "Fq"_a);
   m.def("planarize", &planarize, "Vq"_a, "Fq"_a, "V"_a, "F"_a, "threshold"_a = 0.01,
         "max_distance_to_surface"_a = py::none(), "number_of_iterations"_a = py::none());

@@ -40,7 +40,7 @@ from ._core import Error
 __all__ = [
     "Error", "read_triangle_mesh", "save_mesh", "design_field", "frame_field", "singularities",
     "principal_curvatures", "sharp_edges", "refine_for_quad_size", "integer_grid_map", "quad_mesh",
-    "quad_planarity", "planarize", "quad_remesh",
+    "quad_planarity", "planarize", "quad_remesh", "write_html_viewer", "write_quad_mesh_ply",
 ]
 
 Error.__doc__ = """A refusal or a failure of the package.
@@ -73,6 +73,9 @@ def read_triangle_mesh(filename, repair=True):
 def save_mesh(filename, V, F):
     """Writes a polygon mesh (triangles or quads: ``F`` of shape (#F, k)) as .obj or .off.
 
+    Rows of ``F`` may end with -1 entries, for faces of fewer corners than
+    ``F`` has columns (as :func:`quad_mesh` returns polygons).
+
     Coordinates are written with 17 significant digits, so that they read back
     exactly. The file is written to a temporary file in the same folder and
     renamed: on failure nothing is left half-written.
@@ -84,8 +87,10 @@ def save_mesh(filename, V, F):
         raise _refuse("save_mesh: V: expected shape (n, 3), got %s" % (V.shape,))
     if F.ndim != 2 or F.shape[1] < 3 or F.dtype.kind not in "iu":
         raise _refuse("save_mesh: F: expected an integer array of shape (n, k >= 3), got %s %s" % (F.dtype, F.shape))
-    if F.size and (F.min() < 0 or F.max() >= len(V)):
+    if F.size and (F.max() >= len(V) or (F[:, :3] < 0).any() or ((F < 0) & (F != -1)).any()):
         raise _refuse("save_mesh: F: an index is not a vertex of V (0..%d)" % (len(V) - 1))
+    if F.size and ((F[:, :-1] == -1) & (F[:, 1:] != -1)).any():
+        raise _refuse("save_mesh: F: -1 pads the end of a row only")
     extension = os.path.splitext(filename)[1].lower()
     if extension not in (".obj", ".off"):
         raise _refuse("save_mesh: '%s': the format is chosen by the extension, .obj or .off" % filename)
@@ -93,13 +98,17 @@ def save_mesh(filename, V, F):
     if extension == ".off":
         lines.append("OFF\n%d %d 0\n" % (len(V), len(F)))
         lines.extend("%.17g %.17g %.17g\n" % tuple(p) for p in V)
-        lines.extend("%d %s\n" % (len(f), " ".join(str(int(i)) for i in f)) for f in F)
+        lines.extend("%d %s\n" % (len(f), " ".join(str(int(i)) for i in f)) for f in (row[row >= 0] for row in F))
     else:
         lines.extend("v %.17g %.17g %.17g\n" % tuple(p) for p in V)
-        lines.extend("f %s\n" % " ".join(str(int(i) + 1) for i in f) for f in F)
+        lines.extend("f %s\n" % " ".join(str(int(i) + 1) for i in f) for f in (row[row >= 0] for row in F))
     folder = os.path.dirname(os.path.abspath(filename))
     handle, temporary = tempfile.mkstemp(prefix=".pvf_", dir=folder)
     try:
+        # mkstemp makes the file readable by its owner only: give it the permissions of a file opened for writing
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)
         with os.fdopen(handle, "w") as out:
             out.writelines(lines)
         os.replace(temporary, filename)
@@ -298,17 +307,28 @@ def integer_grid_map(V, F, X, edge_length=None, quads=None, features=None, bound
                                   singularity_cancellation_distance, stiffening_keeps_integers)
 
 
-def quad_mesh(V, F, UV, FUV, seam_transitions=None):
+def quad_mesh(V, F, UV, FUV, seam_transitions=None, keep_trimmed_boundary=False):
     """Extracts the quad mesh of a map's integer iso-lines (after QEx, Ebke et al. 2013).
 
     One vertex per integer point of the map, one edge per iso-line segment
     between two of them, one quad per cell. ``seam_transitions`` (from
     :func:`integer_grid_map`'s info) gives the exact transitions; without it
-    they are found from the uv.
+    they are found from the uv. Vertices of ``V`` that no face uses are ignored.
 
-    Returns ``Vq`` (#Vq, 3), ``Fq`` (#Q, 4) and ``info`` (quads, irregular vertices, repairs).
+    ``keep_trimmed_boundary``: by default only whole cells are kept, so that
+    every face is a quad and the border of the result runs along iso-lines
+    inside the surface. With True, the cells cut by the border of the mesh
+    are kept too, as polygons bounded by the iso-lines and the border (a free
+    border: the result covers the whole surface).
+
+    Returns ``Vq`` (#Vq, 3), ``Fq`` and ``info`` (quads, irregular vertices,
+    repairs, ``trimmed_polygons``). ``Fq`` is (#Q, 4); with
+    ``keep_trimmed_boundary`` it is (#Q, k), k the largest number of corners of
+    a face, and the rows of smaller faces end with -1. :func:`save_mesh`,
+    :func:`write_html_viewer` and :func:`write_quad_mesh_ply` take such rows;
+    :func:`quad_planarity` and :func:`planarize` take quads only.
     """
-    return _core.quad_mesh(V, F, UV, FUV, seam_transitions)
+    return _core.quad_mesh(V, F, UV, FUV, seam_transitions, keep_trimmed_boundary)
 
 
 def quad_planarity(Vq, Fq):
@@ -360,7 +380,7 @@ def _merge_constraints(rows, width):
 
 def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_alignment=True, conjugate=False,
                 planarize=False, b=None, bc=None, curvature_constraints=None, singularity_separation=1.0,
-                max_surface_distance=0.05):
+                max_surface_distance=0.05, keep_trimmed_boundary=False):
     """Remeshes a triangle mesh into quads: the whole road, from the surface to a (planar-)quad mesh.
 
     The stages are those of the command-line program ``design_polyvector_field
@@ -383,7 +403,10 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
     6. the quad mesh (:func:`quad_mesh`, with the map's exact transitions); when
        it reports ``UNREPAIRABLE_FOLD_OVER`` on a map without flipped
        triangles, the map is computed again with ``stiffening_keeps_integers=False``
-       and the quads extracted from it;
+       and the quads extracted from it; ``keep_trimmed_boundary`` is passed
+       on (with True, the cells cut by a free border are kept as polygons,
+       rows of ``Fq`` padded with -1; it goes with ``boundary_alignment=False``
+       and cannot be combined with ``planarize``);
     7. with ``planarize`` (True for the paper's 1%, or a threshold),
        :func:`planarize`, each vertex kept within ``max_surface_distance``
        mean quad edges of the surface; then the planarity. A planarization
@@ -404,7 +427,8 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
     Vq, Fq : the quad mesh.
     info : dict: ``quad_size``, the stages' dicts (``field``, ``map``,
         ``quads``, ``planarization``), ``planarity`` (max, mean),
-        ``map_recomputed``, and ``V``, ``F`` of the refined triangle mesh.
+        ``map_recomputed``, ``V``, ``F`` of the refined triangle mesh and ``X``
+        the frame field on it (what :func:`write_html_viewer` draws with the quads).
     """
     V = np.asarray(V, dtype=np.float64)
     F = np.asarray(F)
@@ -416,6 +440,11 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
         raise _refuse("quad_remesh: F: an index is not a vertex of V (0..%d)" % (len(V) - 1))
     if edge_length is not None and quads is not None:
         raise _refuse("quad_remesh: give edge_length or quads, not both")
+    if not isinstance(keep_trimmed_boundary, (bool, np.bool_)):
+        raise _refuse("quad_remesh: keep_trimmed_boundary: expected True or False", "INVALID_PARAMETER")
+    if keep_trimmed_boundary and planarize:
+        raise _refuse("quad_remesh: planarize takes quads only, and keep_trimmed_boundary keeps the border's "
+                      "polygons: give one of them", "INVALID_PARAMETER")
     # 1. the quad size
     area, mean_edge = _area_and_mean_edge(V, F)
     if edge_length is not None:
@@ -460,12 +489,12 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
     UV, FUV, map_info = integer_grid_map(V2, F2, X, **map_args)
     recomputed = False
     try:
-        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"])
+        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"], keep_trimmed_boundary)
     except Error as e:
         if e.code != "UNREPAIRABLE_FOLD_OVER" or map_info["flipped_faces"] != 0:
             raise
         UV, FUV, map_info = integer_grid_map(V2, F2, X, stiffening_keeps_integers=False, **map_args)
-        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"])
+        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"], keep_trimmed_boundary)
         recomputed = True
     # 7. planarization
     planarization_info = None
@@ -475,9 +504,80 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
         mean_quad_edge = np.linalg.norm(Vq[edges[:, 0]] - Vq[edges[:, 1]], axis=1).mean()
         Vq, planarization_info = globals()["planarize"](Vq, Fq, V2, F2, threshold=threshold,
                                                         max_distance_to_surface=max_surface_distance * mean_quad_edge)
-    _, planarity = quad_planarity(Vq, Fq)
+    # the planarity of the quads (with keep_trimmed_boundary, of the faces with 4 corners)
+    quad_rows = Fq[(Fq[:, :4] >= 0).all(axis=1) & ((Fq[:, 4:] < 0).all(axis=1))][:, :4]
+    _, planarity = quad_planarity(Vq, quad_rows)
     info = {
-        "quad_size": h, "V": V2, "F": F2, "field": field_info, "map": map_info, "quads": quad_info,
+        "quad_size": h, "V": V2, "F": F2, "X": X, "field": field_info, "map": map_info, "quads": quad_info,
         "planarization": planarization_info, "planarity": planarity, "map_recomputed": recomputed,
     }
     return Vq, Fq, info
+
+
+def _singularity_rows(singularities):
+    """The singularities as a (k, 2) integer array of rows (vertex, index numerator)."""
+    if isinstance(singularities, tuple) and len(singularities) == 3 and isinstance(singularities[2], dict):
+        vertex, _, info = singularities  # as singularities() returns them
+        return np.column_stack((np.asarray(vertex, dtype=np.int64).reshape(-1),
+                                np.asarray(info["index_numerators"], dtype=np.int64).reshape(-1)))
+    return singularities
+
+
+def write_html_viewer(filename, V, F, X, singularities=None, Vq=None, Fq=None, constrained_faces=None,
+                      page_title=None, max_glyph_faces=None, planarity_colour_range=None, three_js_directory=None):
+    """Writes one self-contained web page that shows a field and, if given, its quad mesh.
+
+    The page works offline: it fetches nothing, and holds the data and the code
+    that draws it, three.js (r111) and its OrbitControls included, copied from
+    the files of Debian's ``libjs-three`` when the page is written. It has
+    orbit controls, a check box per layer, and a title with the figures: the
+    number of faces and of singularities and, with quads, the number of quads
+    and their largest and mean planarity. The layers (the manual's section "A
+    web page of every result, and coloured PLY" describes them) are:
+
+    - the surface ``V, F``;
+    - the field ``X`` (#F, 3N), as :func:`design_field` or :func:`frame_field`
+      return it: short lines from each face's centroid along its N vectors (a
+      field of pairs {u, -u} as N/2 lines through the centroid); above
+      ``max_glyph_faces`` faces (default 20000) on a subsample of about that many;
+    - the singularities: a ball per singular vertex, red for a positive index
+      and blue for a negative one. ``singularities`` is what
+      :func:`singularities` returns, or an integer array of rows (vertex, index
+      numerator k of the index k/N); None (default) finds them from ``X`` as
+      :func:`singularities` does;
+    - the constrained faces (``constrained_faces``, e.g. the ``b`` of the
+      design), in orange;
+    - the quad mesh ``Vq, Fq`` (rows of polygons padded with -1 allowed), each
+      face coloured by its planarity (:func:`quad_planarity`'s measure) from
+      blue (planar) to red at ``planarity_colour_range`` (default: the
+      largest planarity), with a colour bar, as in the paper's planar-quad
+      figures (Section 5).
+
+    ``page_title`` (default "CGAL Polyvector Fields") comes before the figures.
+    ``three_js_directory`` is the folder of three.js r111 that holds
+    ``three.min.js`` and ``examples/js/controls/OrbitControls.js`` (default
+    ``/usr/share/javascript/three``, where Debian's ``libjs-three`` puts them).
+
+    The page is written to a temporary file in the same folder and renamed
+    when complete. Bad input, or a missing three.js file (the message gives its
+    path, the code is ``CANNOT_OPEN_FILE``), raises :class:`Error` and leaves
+    no file behind (and ``filename`` as it was).
+    """
+    if three_js_directory is not None and not isinstance(three_js_directory, str):
+        three_js_directory = os.fspath(three_js_directory)
+    _core.write_html_viewer(os.fspath(filename), V, F, X, _singularity_rows(singularities), Vq, Fq,
+                            constrained_faces, page_title, max_glyph_faces, planarity_colour_range,
+                            three_js_directory)
+
+
+def write_quad_mesh_ply(filename, Vq, Fq, planarity_colour_range=None):
+    """Writes a quad mesh as PLY with a colour and a quality per face: its planarity, for MeshLab.
+
+    ``quality`` is the planarity of each quad (:func:`quad_planarity`'s
+    measure, -1 for a face that is not a quad) and ``red, green, blue`` its
+    colour on the page's scale, blue (planar) to red at
+    ``planarity_colour_range`` (default: the largest planarity). Rows of
+    ``Fq`` may be polygons padded with -1. Written through a temporary file:
+    on failure :class:`Error` is raised and no file is left behind.
+    """
+    _core.write_quad_mesh_ply(os.fspath(filename), Vq, Fq, planarity_colour_range)

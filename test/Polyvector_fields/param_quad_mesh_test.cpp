@@ -305,6 +305,42 @@ TEST(QuadFlatPlane, ExactMapWithIsoLinesAlongEdges)
   }
 }
 
+// A vertex that no face uses has no iso-line directions: the check of the points off
+// the integer grid passes over it (it took it for a singular point with 0 directions,
+// NOT_AN_INTEGER_GRID_MAP), and the quads are those of the mesh without it.
+TEST(QuadFlatPlane, IsolatedVertexIsIgnored)
+{
+  for(const bool trimmed : { false, true })
+  {
+    Mesh tm = grid(5, 7);
+    auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+    for(Halfedge h : halfedges(tm))
+      if(!CGAL::is_border(h, tm))
+        uv[h] = { 2 * tm.point(target(h, tm)).x(), 2 * tm.point(target(h, tm)).y() };
+    Mesh reference;
+    PVF::Quad_extraction_result r0;
+    ASSERT_EQ(PVF::extract_quad_mesh(tm, uv, reference, r0, PVF::parameters::keep_trimmed_boundary(trimmed)),
+              PVF::Error_code::SUCCESS)
+      << r0.diagnostic;
+    // inside the grid's bounding box, and far from it
+    for(const Point& p : { Point(2.5, 3.5, 0), Point(100, -50, 7) })
+    {
+      Mesh with = tm;
+      with.add_vertex(p);
+      auto uv_with = with.property_map<Halfedge, UV>("h:uv").first;
+      Mesh qm;
+      PVF::Quad_extraction_result r;
+      ASSERT_EQ(PVF::extract_quad_mesh(with, uv_with, qm, r, PVF::parameters::keep_trimmed_boundary(trimmed)),
+                PVF::Error_code::SUCCESS)
+        << r.diagnostic << (trimmed ? " (trimmed)" : "");
+      EXPECT_EQ(num_faces(qm), num_faces(reference));
+      EXPECT_EQ(num_vertices(qm), num_vertices(reference));
+      EXPECT_EQ(r.singular_points, 0u);
+      EXPECT_EQ(quad_signature(qm), quad_signature(reference));
+    }
+  }
+}
+
 namespace {
 
 // The full pipeline: constant field on a jittered grid -> integer-grid map -> quads.

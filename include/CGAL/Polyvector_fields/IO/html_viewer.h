@@ -47,20 +47,11 @@ Error_code html_viewer_text_checked(const TriangleMesh& tm, RootMap root_map, st
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   namespace inp = Polyvector_fields::internal_np;
 
-  if(N == 0)
-    return Error_code::INVALID_DEGREE;
   const std::size_t max_glyph_faces =
     choose_parameter(get_parameter(np, inp::max_glyph_faces), default_max_glyph_faces);
-  if(max_glyph_faces == 0)
-  {
-    message = "max_glyph_faces must be at least 1";
-    return Error_code::INVALID_PARAMETER;
-  }
   const auto faces = face_list(tm);
   const auto vertices = vertex_list(tm);
   const std::size_t F = faces.size();
-  if(F == 0)
-    return Error_code::EMPTY_MESH;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     CGAL::get_const_property_map(CGAL::vertex_point, tm));
 
@@ -70,21 +61,13 @@ Error_code html_viewer_text_checked(const TriangleMesh& tm, RootMap root_map, st
   const std::vector<face_descriptor>* list = choose_parameter(
     get_parameter(np, inp::constrained_faces), static_cast<const std::vector<face_descriptor>*>(nullptr));
   std::vector<bool> list_flags;
-  if(list != nullptr)
+  if(N != 0 && max_glyph_faces == 0)  // a degree of 0 is named first
   {
-    const Error_code code = constrained_flags(tm, *list, list_flags);
-    if(code != Error_code::SUCCESS)
-      return code;
-    flags = &list_flags;
-  }
-  if(flags != nullptr && flags->size() != F)
-  {
-    message = "the constrained-face flags have " + std::to_string(flags->size()) + " entries for " + std::to_string(F) + " faces";
+    message = "max_glyph_faces must be at least 1";
     return Error_code::INVALID_PARAMETER;
   }
-
   std::vector<std::pair<std::size_t, int> > singular;
-  Error_code code = singularity_ids(tm, singularities, singular);
+  Error_code code = check_field_output(tm, N, F, list, singularities, flags, list_flags, singular, message);
   if(code != Error_code::SUCCESS)
     return code;
 

@@ -273,6 +273,40 @@ inline void append_vtk_cell_data(const std::vector<std::vector<double> >& roots,
   }
 }
 
+// The checks that a field's VTK file and its HTML page share: a degree N of at
+// least 1, a mesh with F > 0 faces, and the constrained faces as one flag per
+// face. Those given as a list (`list`, which wins over `flags`) are turned into
+// flags in `list_flags`; on success `flags` points to the flags to use (null
+// when none was given), and `singular` holds the singularities as (vertex
+// index, index numerator). A flag vector of the wrong size is
+// INVALID_PARAMETER, said in `message`.
+template <typename TriangleMesh, typename SingularityRange>
+Error_code check_field_output(const TriangleMesh& tm, std::size_t N, std::size_t F,
+                              const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>* list,
+                              const SingularityRange& singularities, const std::vector<bool>*& flags,
+                              std::vector<bool>& list_flags, std::vector<std::pair<std::size_t, int> >& singular,
+                              std::string& message)
+{
+  if(N == 0)
+    return Error_code::INVALID_DEGREE;
+  if(F == 0)
+    return Error_code::EMPTY_MESH;
+  if(list != nullptr)
+  {
+    const Error_code code = constrained_flags(tm, *list, list_flags);
+    if(code != Error_code::SUCCESS)
+      return code;
+    flags = &list_flags;
+  }
+  if(flags != nullptr && flags->size() != F)
+  {
+    message = "the constrained-face flags have " + std::to_string(flags->size()) + " entries for " +
+              std::to_string(F) + " faces";
+    return Error_code::INVALID_PARAMETER;
+  }
+  return singularity_ids(tm, singularities, singular);
+}
+
 // Builds the whole file. The constrained faces are given as a list (`list`,
 // which wins) or as one flag per face (`flags`); both are null when no
 // constraint is given.
@@ -282,31 +316,17 @@ Error_code vtk_text(const TriangleMesh& tm, RootMap root_map, std::size_t N, con
                     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>* list,
                     const VertexPointMap& vpm, std::string& out)
 {
-  if(N == 0)
-    return Error_code::INVALID_DEGREE;
   const auto faces = face_list(tm);
   const auto vertices = vertex_list(tm);
   const std::size_t F = faces.size();
-  if(F == 0)
-    return Error_code::EMPTY_MESH;
   std::vector<bool> list_flags;
-  if(list != nullptr)
-  {
-    const Error_code code = constrained_flags(tm, *list, list_flags);
-    if(code != Error_code::SUCCESS)
-      return code;
-    flags = &list_flags;
-  }
-  const std::vector<bool>* is_constrained = flags;
-  if(is_constrained != nullptr && is_constrained->size() != F)
-    return Error_code::INVALID_PARAMETER;
-
-  Error_code code = check_vtk_arrays(N, F, is_constrained != nullptr, face_scalars);
+  std::vector<std::pair<std::size_t, int> > singular;
+  std::string message;  // the VTK writer reports the code alone
+  Error_code code = check_field_output(tm, N, F, list, singularities, flags, list_flags, singular, message);
   if(code != Error_code::SUCCESS)
     return code;
-
-  std::vector<std::pair<std::size_t, int> > singular;
-  code = singularity_ids(tm, singularities, singular);
+  const std::vector<bool>* is_constrained = flags;
+  code = check_vtk_arrays(N, F, is_constrained != nullptr, face_scalars);
   if(code != Error_code::SUCCESS)
     return code;
   const std::size_t S = singular.size();

@@ -94,12 +94,13 @@ Error_code find_integer_points(const Chart_mesh& M, Extractor& X, Report& result
 {
   X.enumerate_points();
   X.create_slots();
-  // every interior vertex that is not an integer point must be regular (4 directions)
+  // every interior vertex that is not an integer point must be regular (4 directions);
+  // a vertex with no incident face (empty fan) has no directions and no say in the quads
   {
     std::vector<int> dirs;
     for(std::size_t v = 0; v < M.V; ++v)
     {
-      if(M.border_vertex[v] || X.vertex_point[v] != npos)
+      if(M.border_vertex[v] || X.vertex_point[v] != npos || M.fan[v].empty())
         continue;
       std::size_t n = 0;
       for(std::size_t c : M.fan[v])

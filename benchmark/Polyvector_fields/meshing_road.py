@@ -523,9 +523,10 @@ def road_targets(road):
     if ok(m):
         t = m["stages"].get("parametrization", float("nan"))
         row("%d faces (bumpy, 3 Loop steps), the map alone <= 3 s" % m.get("faces", 0), "%s s" % fmt(t), t <= 3.0,
-            "%s, best of %d: its `parametrization` stage (%s); %s flipped faces"
+            "%s, best of %d: its `parametrization` stage (%s); %s flipped faces, energy rounded / continuous %s"
             % (shown(m["command"]), len(m.get("runs_s", [1])),
-               ", ".join("%s %s" % (k, fmt(v)) for k, v in m["map_stages"].items()), m.get("map_flipped_faces", "?")))
+               ", ".join("%s %s" % (k, fmt(v)) for k, v in m["map_stages"].items()), m.get("map_flipped_faces", "?"),
+               fmt(m.get("energy_ratio"), 4)))
     else:
         failed("160k faces (bumpy, 3 Loop steps), the map alone <= 3 s", m, "map160k")
     g = road.get("million")
@@ -645,18 +646,19 @@ def growth_table(road):
     rows = []
     for e in series:
         if not ok(e):
-            rows.append([e.get("scheme", "?"), e.get("input_faces", "?"), e.get("status", "?")] + ["-"] * 5)
+            rows.append([e.get("scheme", "?"), e.get("input_faces", "?"), e.get("status", "?")] + ["-"] * 6)
             continue
         rows.append([e.get("scheme", "?"), e.get("faces", "?"), fmt(e["stages"].get("parametrization")),
                      ", ".join("%s %s" % (k, fmt(v)) for k, v in e["map_stages"].items()),
-                     e.get("map_flipped_faces", "-"), e.get("integer_unknowns", "-"), fmt(e["wall_s"]),
+                     e.get("map_flipped_faces", "-"), e.get("integer_unknowns", "-"), fmt(e.get("energy_ratio"), 4),
+                     fmt(e["wall_s"]),
                      fmt(e["peak_kb"] / 1024.0)])
     pts = [(e["faces"], e["stages"]["parametrization"]) for e in series if ok(e) and "parametrization" in e["stages"]]
     out = ["## Growth of the map's time (bumpy.off subdivided: L a Loop step, S a sqrt(3) step)\n",
            "Each size: `design_polyvector_field --mesh bumpy_<steps>.off %s`, one run; the map is its "
            "`parametrization` stage.\n" % " ".join(MAP_OPTIONS),
            table(["steps", "faces", "map s", "map sub-stages s", "flipped faces", "integer unknowns",
-                  "whole process s", "peak MB"], rows), ""]
+                  "energy rounded / continuous", "whole process s", "peak MB"], rows), ""]
     if len(pts) >= 2:
         out.append("Log-log exponent over the %d sizes: **%.2f**%s\n" % (
             len(pts), loglog_exponent(pts),

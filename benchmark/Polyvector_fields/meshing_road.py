@@ -411,10 +411,22 @@ def corpus_bound(faces):
 # ---------------------------------------------------------------------------
 # Measuring, then the tables.
 # ---------------------------------------------------------------------------
-def run_groups(ctx, groups, previous=None):
-    """Runs the groups asked for; the entries of the others are kept from `previous` (road.json)."""
+def run_groups(ctx, groups, previous=None, save=None):
+    """Runs the groups asked for; the entries of the others are kept from `previous` (road.json).
+
+    `save(road)` is called after each group, so that a run stopped later keeps what was measured. The corpus
+    and libigl groups keep an earlier measurement when this run has no input for them.
+    """
     road = dict(previous or {})
     for group in groups:
+        if save and road:
+            save(road)
+        if group == "corpus" and not ctx.get("corpus_results") and "meshes" in road.get("corpus", {}):
+            log("== meshing road: corpus kept from %s (no --corpus-results)" % road["corpus"]["folder"])
+            continue
+        if group == "libigl" and not ctx.get("libigl_program") and "ours" in road.get("libigl", {}):
+            log("== meshing road: libigl kept from the earlier run (no pvf_libigl_n_polyvector)")
+            continue
         log("== meshing road: %s" % group)
         if group == "bunny":
             road.update(run_bunny(ctx))
@@ -432,6 +444,8 @@ def run_groups(ctx, groups, previous=None):
             else:
                 road["corpus"] = {"status": "not measured: give --corpus-results DIR (the --out folder of "
                                             "scripts/run_corpus.py)"}
+    if save:
+        save(road)
     return road
 
 

@@ -603,11 +603,18 @@ def main():
                                                                       os.X_OK) else None),
                "torus_mesh": os.path.join(resdir, "torus_%dx%d.off" % (n, m)),
                "write_torus": lambda path: (write_torus(path + ".tmp", n, m, R, r), os.replace(path + ".tmp", path))}
+        for program in (cli, ctx["subdivide"]):
+            if not os.access(program, os.X_OK):
+                sys.exit("run_benchmarks.py: '%s' is not built (run without --no-build, or build the targets %s)"
+                         % (program, " ".join(ROAD_PROGRAMS)))
         os.makedirs(ctx["meshes"], exist_ok=True)
-        road = meshing_road.run_groups(ctx, groups, road)
-        with open(os.path.join(resdir, "road.json.tmp"), "w") as f:
-            json.dump(road, f, indent=1)
-        os.replace(os.path.join(resdir, "road.json.tmp"), os.path.join(resdir, "road.json"))
+
+        def save(measured):
+            with open(os.path.join(resdir, "road.json.tmp"), "w") as f:
+                json.dump(measured, f, indent=1)
+            os.replace(os.path.join(resdir, "road.json.tmp"), os.path.join(resdir, "road.json"))
+
+        road = meshing_road.run_groups(ctx, groups, road, save)
 
     text = report(design, frames, memory, args.max_level, time.time() - start, quads, torus, road)
     with open(args.out, "w") as f:

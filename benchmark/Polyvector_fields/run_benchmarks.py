@@ -22,6 +22,22 @@ target, with the measured figure and whether it is met.
 Sizes: bumpy.off (2,496 faces) after 1..L Loop subdivisions: 10k, 40k, 160k,
 640k faces for the default L = 4 (about 15 minutes on 2 cores); L = 5 adds
 2.56M faces for the default solver only (a few more minutes and about 3 GB).
+
+The meshing road (issue 22, meshing_road.py): the command-line program from a
+mesh to quads, whole process, one row per target of the issue, the bunny's
+stages side by side, the growth of the map's time and the corpus. Groups:
+bunny, map160k, million, growth, libigl, corpus (--road-groups, default all);
+--road-only runs them without the design suite, --no-road the suite alone. The
+tables are made from every JSON file of build-dir/results, so groups run
+separately add up in one benchmark/results.md. For example, the cheap groups:
+
+    python3 benchmark/Polyvector_fields/run_benchmarks.py --road-only --road-groups bunny,map160k
+
+and the corpus row from a run of scripts/run_corpus.py --out DIR (its table
+saved with > DIR/table.md gives wall times; without it, the logs' stage times):
+
+    python3 benchmark/Polyvector_fields/run_benchmarks.py --road-only --road-groups corpus \
+        --corpus-results DIR --corpus-table DIR/table.md
 """
 
 import argparse
@@ -32,9 +48,14 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import meshing_road  # noqa: E402
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 PROGRAMS = ["pvf_design_benchmark", "pvf_frame_field_benchmark", "pvf_quad_benchmark", "pvf_peak_memory",
-            "design_polyvector_field"]
+            "design_polyvector_field", "pvf_subdivide_mesh"]
+# What the meshing road alone needs (--road-only).
+ROAD_PROGRAMS = ["design_polyvector_field", "pvf_subdivide_mesh"]
 # Benchmark solver name -> pvf_peak_memory arguments (solver, mode).
 MEMORY_SOLVERS = {"SimplicialLDLT": ("ldlt", "sequential"), "SimplicialLDLT_parallel": ("ldlt", "parallel"),
                   "CHOLMOD": ("cholmod", "sequential"), "CHOLMOD_parallel": ("cholmod", "parallel"),
@@ -58,10 +79,14 @@ def run(cmd, env=None, capture=False):
     return None
 
 
-def build(build_dir, jobs):
+def build(build_dir, jobs, programs=PROGRAMS, libigl_include=None):
+    extra = []
+    if libigl_include:
+        extra = ["-DPVF_LIBIGL_INCLUDE_DIR=" + os.path.abspath(libigl_include)]
+        programs = list(programs) + ["pvf_libigl_n_polyvector"]
     run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
-         "-DPVF_BUILD_BENCHMARKS=ON", "-DBUILD_TESTING=OFF"])
-    for program in PROGRAMS:
+         "-DPVF_BUILD_BENCHMARKS=ON", "-DBUILD_TESTING=OFF"] + extra)
+    for program in programs:
         run(["cmake", "--build", build_dir, "--target", program, "-j", str(jobs)])
 
 
@@ -259,14 +284,21 @@ def crossover(design):
             table(["faces"] + solvers, rows), ""]
 
 
-def report(design, frames, memory, max_level, elapsed, quads=None, torus=None):
+def report(design, frames, memory, max_level, elapsed, quads=None, torus=None, road=None):
     out = []
     out.append("# Polyvector fields benchmark results\n")
-    out.append("Release build, %s, %d cores; bumpy.off after 1..%d Loop subdivisions; "
+    if road:
+        out.append("Release build, %d cores, written %s.\n" % (os.cpu_count() or 0,
+                                                               time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())))
+        out.extend(meshing_road.road_report(road))
+    if design is None:
+        out.append("(The design suite was not run: run without --road-only.)\n")
+        return "\n".join(out)
+    out.append("Design suite: Release build, %d cores; bumpy.off after 1..%d Loop subdivisions; "
                "sign-symmetric 4-PolyVector (frame field) with 1%% of the faces under hard general-frame "
                "constraints (two active degrees). Times are wall-clock (Google Benchmark real time); "
-               "suite ran in %s s.\n" % (time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-                                            os.cpu_count() or 0, max_level, "%.0f" % elapsed if elapsed == elapsed else "?"))
+               "suite ran in %s s.\n" % (os.cpu_count() or 0, max_level,
+                                            "%.0f" % elapsed if elapsed == elapsed else "?"))
     load = design.get("context", {}).get("load_avg")
     if load:
         out.append("Load average when the design benchmarks started: %s (a figure above 0 means other "
@@ -441,6 +473,14 @@ def report(design, frames, memory, max_level, elapsed, quads=None, torus=None):
     return "\n".join(out)
 
 
+def load_json(resdir, name):
+    path = os.path.join(resdir, name)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--max-level", type=int, default=4, help="highest subdivision level (4: 640k faces, 5: 2.56M)")
@@ -450,54 +490,133 @@ def main():
     ap.add_argument("--no-build", action="store_true", help="use the programs already built")
     ap.add_argument("--filter", default="", help="--benchmark_filter for pvf_design_benchmark")
     ap.add_argument("--report-only", action="store_true",
-                    help="rewrite the table from the JSON files of the last run (build-dir/results)")
+                    help="rewrite the tables from the JSON files of the last runs (build-dir/results)")
+    road = ap.add_argument_group("the meshing road (issue 22)")
+    road.add_argument("--road-only", action="store_true", help="run the meshing road only, not the design suite")
+    road.add_argument("--no-road", action="store_true", help="run the design suite only, not the meshing road")
+    road.add_argument("--road-groups", default=",".join(meshing_road.GROUPS),
+                      help="comma-separated groups of the road to run (default: all): " + ", ".join(meshing_road.GROUPS))
+    road.add_argument("--repeats", type=int, default=3,
+                      help="runs of each road command but the 1M-face one and the growth series; the best counts "
+                           "(default 3)")
+    road.add_argument("--timeout", type=float, default=900,
+                      help="seconds before a road run is killed and reported as missed (default 900)")
+    road.add_argument("--bunny", default=None,
+                      help="the bunny (default: ../shared/data/bunny.off beside the repository, else data/bunny.off)")
+    road.add_argument("--growth", default=",".join(meshing_road.GROWTH_SCHEMES),
+                      help="the sizes of the growth series: bumpy.off after these steps (L Loop, S sqrt 3), "
+                           "comma-separated (default %s)" % ",".join(meshing_road.GROWTH_SCHEMES))
+    road.add_argument("--corpus-results", default=None, metavar="DIR",
+                      help="the --out folder of a run of scripts/run_corpus.py (nothing is run)")
+    road.add_argument("--corpus-table", default=None, metavar="FILE",
+                      help="run_corpus.py's standard output (its table) for that run: wall times and statuses")
+    road.add_argument("--libigl-include", default=None, metavar="DIR",
+                      help="include/ of a libigl checkout that has igl/n_polyvector.h: builds "
+                           "pvf_libigl_n_polyvector against it for the libigl group (see that file's header)")
+    road.add_argument("--libigl-program", default=None, metavar="EXE",
+                      help="pvf_libigl_n_polyvector already built (default: the build's, if it is there)")
     args = ap.parse_args()
+    groups = [g for g in args.road_groups.split(",") if g]
+    unknown = [g for g in groups if g not in meshing_road.GROUPS]
+    if unknown:
+        ap.error("unknown --road-groups %s (groups: %s)" % (", ".join(unknown), ", ".join(meshing_road.GROUPS)))
+    if args.road_only and args.no_road:
+        ap.error("--road-only and --no-road exclude each other")
+    if args.repeats < 1:
+        ap.error("--repeats must be at least 1")
+    if args.corpus_table and not args.corpus_results:
+        ap.error("--corpus-table goes with --corpus-results")
+    schemes = [g for g in args.growth.split(",") if g]
+    if any(not c or c.strip("LS") for c in schemes):
+        ap.error("--growth expects steps made of L and S, comma-separated, e.g. L,LL,LLL,LLLL")
+    if len(schemes) < 4 and "growth" in groups and not args.no_road:
+        print("note: fewer than 4 sizes in --growth: the growth target needs 4", file=sys.stderr)
 
     start = time.time()
     resdir = os.path.join(args.build_dir, "results")
     if args.report_only:
-        loaded = []
-        for name in ("design.json", "frames.json", "memory.json", "quads.json", "torus.json"):
-            with open(os.path.join(resdir, name)) as f:
-                loaded.append(json.load(f))
-        text = report(loaded[0], loaded[1], loaded[2], args.max_level, float("nan"), loaded[3], loaded[4])
+        names = ("design.json", "frames.json", "memory.json", "quads.json", "torus.json", "road.json")
+        loaded = [load_json(resdir, name) for name in names]
+        text = report(loaded[0], loaded[1], loaded[2], args.max_level, float("nan"), loaded[3], loaded[4], loaded[5])
         with open(args.out, "w") as f:
             f.write(text + "\n")
         print(text)
         return
     if not args.no_build:
-        build(args.build_dir, args.jobs)
+        build(args.build_dir, args.jobs, ROAD_PROGRAMS if args.road_only else PROGRAMS, args.libigl_include)
     bindir = os.path.join(args.build_dir, "benchmark", "Polyvector_fields")
+    cli = os.path.join(args.build_dir, "tools", "design_polyvector_field", "design_polyvector_field")
     os.makedirs(resdir, exist_ok=True)
     env = dict(os.environ, PVF_BENCH_MAX_LEVEL=str(args.max_level))
 
-    extra = ["--benchmark_filter=" + args.filter] if args.filter else []
-    design = run_benchmark(os.path.join(bindir, "pvf_design_benchmark"), os.path.join(resdir, "design.json"), env, extra)
-    frames = run_benchmark(os.path.join(bindir, "pvf_frame_field_benchmark"), os.path.join(resdir, "frames.json"), env)
-    quads = run_benchmark(os.path.join(bindir, "pvf_quad_benchmark"), os.path.join(resdir, "quads.json"), env)
+    design = frames = memory = quads = torus = None
+    if not args.road_only:
+        extra = ["--benchmark_filter=" + args.filter] if args.filter else []
+        design = run_benchmark(os.path.join(bindir, "pvf_design_benchmark"), os.path.join(resdir, "design.json"),
+                               env, extra)
+        frames = run_benchmark(os.path.join(bindir, "pvf_frame_field_benchmark"), os.path.join(resdir, "frames.json"),
+                               env)
+        quads = run_benchmark(os.path.join(bindir, "pvf_quad_benchmark"), os.path.join(resdir, "quads.json"), env)
 
-    # One process per (level, solver, mode) that the design benchmark ran.
-    variants = sorted({(split_name(b["name"])[1], int(split_name(b["name"])[2])) for b in design["benchmarks"]
-                       if split_name(b["name"])[0] == "BM_design" and "error_occurred" not in b})
-    memory = []
-    for solver_name, level in sorted(variants, key=lambda v: (v[1], v[0])):
-        if solver_name not in MEMORY_SOLVERS:
-            continue
-        solver, mode = MEMORY_SOLVERS[solver_name]
-        line = run([os.path.join(bindir, "pvf_peak_memory"), str(level), solver, mode], env=env, capture=True)
-        entry = dict(kv.split("=", 1) for kv in line.split())
-        for key in ("faces", "mesh_rss_kb", "peak_kb", "design_peak_kb", "hwm_reset"):
-            entry[key] = int(entry[key])
-        memory.append(entry)
-    with open(os.path.join(resdir, "memory.json"), "w") as f:
-        json.dump(memory, f, indent=1)
+        # One process per (level, solver, mode) that the design benchmark ran.
+        variants = sorted({(split_name(b["name"])[1], int(split_name(b["name"])[2])) for b in design["benchmarks"]
+                           if split_name(b["name"])[0] == "BM_design" and "error_occurred" not in b})
+        memory = []
+        for solver_name, level in sorted(variants, key=lambda v: (v[1], v[0])):
+            if solver_name not in MEMORY_SOLVERS:
+                continue
+            solver, mode = MEMORY_SOLVERS[solver_name]
+            line = run([os.path.join(bindir, "pvf_peak_memory"), str(level), solver, mode], env=env, capture=True)
+            entry = dict(kv.split("=", 1) for kv in line.split())
+            for key in ("faces", "mesh_rss_kb", "peak_kb", "design_peak_kb", "hwm_reset"):
+                entry[key] = int(entry[key])
+            memory.append(entry)
+        with open(os.path.join(resdir, "memory.json"), "w") as f:
+            json.dump(memory, f, indent=1)
 
-    cli = os.path.join(args.build_dir, "tools", "design_polyvector_field", "design_polyvector_field")
-    torus = run_cli_torus(cli, resdir)
-    with open(os.path.join(resdir, "torus.json"), "w") as f:
-        json.dump(torus, f, indent=1)
+        torus = run_cli_torus(cli, resdir)
+        with open(os.path.join(resdir, "torus.json"), "w") as f:
+            json.dump(torus, f, indent=1)
+    else:
+        # The suite's tables of an earlier run, if any, stay in the report.
+        design, frames, memory, quads, torus = (load_json(resdir, n) for n in
+                                                ("design.json", "frames.json", "memory.json", "quads.json",
+                                                 "torus.json"))
+        if None in (design, frames, memory):
+            design = frames = memory = quads = torus = None
 
-    text = report(design, frames, memory, args.max_level, time.time() - start, quads, torus)
+    road = load_json(resdir, "road.json")
+    if not args.no_road:
+        bunny = args.bunny
+        if bunny is None:
+            shared = os.path.join(ROOT, "..", "shared", "data", "bunny.off")
+            bunny = shared if os.path.isfile(shared) else os.path.join(ROOT, "data", "bunny.off")
+        if not os.path.isfile(bunny):
+            sys.exit("run_benchmarks.py: the bunny '%s' is not a file (--bunny PATH)" % bunny)
+        n, m, R, r = TORUS
+        ctx = {"root": ROOT, "resdir": resdir, "cli": cli, "subdivide": os.path.join(bindir, "pvf_subdivide_mesh"),
+               "bunny": os.path.abspath(bunny), "bumpy": os.path.join(ROOT, "data", "bumpy.off"),
+               "meshes": os.path.join(resdir, "road", "meshes"), "repeats": args.repeats, "timeout": args.timeout,
+               "growth": schemes, "corpus_results": args.corpus_results, "corpus_table": args.corpus_table,
+               "libigl_program": args.libigl_program or (os.path.join(bindir, "pvf_libigl_n_polyvector")
+                                                         if os.access(os.path.join(bindir, "pvf_libigl_n_polyvector"),
+                                                                      os.X_OK) else None),
+               "torus_mesh": os.path.join(resdir, "torus_%dx%d.off" % (n, m)),
+               "write_torus": lambda path: (write_torus(path + ".tmp", n, m, R, r), os.replace(path + ".tmp", path))}
+        for program in (cli, ctx["subdivide"]):
+            if not os.access(program, os.X_OK):
+                sys.exit("run_benchmarks.py: '%s' is not built (run without --no-build, or build the targets %s)"
+                         % (program, " ".join(ROAD_PROGRAMS)))
+        os.makedirs(ctx["meshes"], exist_ok=True)
+
+        def save(measured):
+            with open(os.path.join(resdir, "road.json.tmp"), "w") as f:
+                json.dump(measured, f, indent=1)
+            os.replace(os.path.join(resdir, "road.json.tmp"), os.path.join(resdir, "road.json"))
+
+        road = meshing_road.run_groups(ctx, groups, road, save)
+
+    text = report(design, frames, memory, args.max_level, time.time() - start, quads, torus, road)
     with open(args.out, "w") as f:
         f.write(text + "\n")
     print(text)

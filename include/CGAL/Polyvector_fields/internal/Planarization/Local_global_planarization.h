@@ -55,6 +55,16 @@ struct Planarization_parameters
   double fairness_weight = 0.1;    // wf
   double closeness_decay = 0.9;    // the factor of beta at each iteration
   std::size_t max_iterations = 500;
+  // The iterations stop early, as not converged, when at the pace of the last
+  // stall_window iterations (the decrease of the largest planarity) the
+  // threshold would not be reached within max_iterations: the result would
+  // not be used (DID_NOT_CONVERGE) and the rest of the iterations would be
+  // spent for nothing. 0 turns the test off.
+  std::size_t stall_window = 50;
+  // The local step and the closest points shared among the cores (TBB):
+  // the same numbers as one core, bit for bit (each quad and each vertex is
+  // computed alone, and the sums are made in order afterwards).
+  bool parallel = true;
   // The largest distance of a vertex of the result to the reference, when
   // given; otherwise default_distance_fraction of the mean edge length of the
   // input quad mesh.
@@ -198,23 +208,32 @@ public:
 
   // S receives the closest points of the rows of Y; mx and mean the largest
   // and the mean distance.
-  void operator()(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, double& mx, double& mean)
+  // The queries are independent (the tree is only read): with `parallel`,
+  // the cores share them; the distances are summed in order afterwards.
+  void operator()(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, double& mx, double& mean, bool parallel)
   {
     const std::size_t n = std::size_t(Y.rows());
     if(!m_have_hint)
       S.resize(Y.rows(), 3);
+    m_distance.resize(n);
+    for_each_range(parallel, n, 1024, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const Eigen::Index r = Eigen::Index(i);
+        const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
+        const typename K::Point_3 s = m_have_hint
+                                        ? m_tree.closest_point(q, typename K::Point_3(S(r, 0), S(r, 1), S(r, 2)))
+                                        : m_tree.closest_point(q);
+        S(r, 0) = CGAL::to_double(s.x());
+        S(r, 1) = CGAL::to_double(s.y());
+        S(r, 2) = CGAL::to_double(s.z());
+        m_distance[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
+      }
+    });
     mx = 0;
     double sum = 0;
-    for(std::size_t i = 0; i < n; ++i)
+    for(double d : m_distance)
     {
-      const Eigen::Index r = Eigen::Index(i);
-      const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
-      const typename K::Point_3 s =
-        m_have_hint ? m_tree.closest_point(q, typename K::Point_3(S(r, 0), S(r, 1), S(r, 2))) : m_tree.closest_point(q);
-      S(r, 0) = CGAL::to_double(s.x());
-      S(r, 1) = CGAL::to_double(s.y());
-      S(r, 2) = CGAL::to_double(s.z());
-      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
       mx = (std::max)(mx, d);
       sum += d;
     }
@@ -225,6 +244,7 @@ public:
 private:
   Tree m_tree;
   bool m_have_hint = false;
+  std::vector<double> m_distance;
 };
 
 // The fixed matrix C^T C + wc I + wf D^T D; DtD receives D^T D.
@@ -257,26 +277,32 @@ inline Eigen::SparseMatrix<double> planarization_matrix(std::size_t n, const std
 }
 
 // The local step: for each quad, its vertices projected onto its best-fit
-// plane and centred (C P_f), summed into the rows of its vertices.
-inline Eigen::MatrixXd projected_quads(const Eigen::MatrixXd& X, const std::vector<std::array<std::size_t, 4> >& quads)
+// plane and centred (C P_f), summed into the rows of its vertices. The quads
+// are projected independently (shared among the cores with `parallel`) into
+// `projected`, then summed in quad order: the same sums either way.
+inline Eigen::MatrixXd projected_quads(const Eigen::MatrixXd& X, const std::vector<std::array<std::size_t, 4> >& quads,
+                                       bool parallel, std::vector<Eigen::Matrix<double, 4, 3> >& projected)
 {
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(X.rows(), 3);
-  for(const auto& q : quads)
-  {
-    Eigen::Matrix<double, 4, 3> P;
-    for(int k = 0; k < 4; ++k)
-      P.row(k) = X.row(Eigen::Index(q[k]));
-    const Eigen::RowVector3d c = P.colwise().mean();
-    const Eigen::Matrix<double, 4, 3> Q = P.rowwise() - c;
-    const Eigen::Matrix3d cov = Q.transpose() * Q;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-    const Eigen::Vector3d nrm = es.eigenvectors().col(0);
-    for(int k = 0; k < 4; ++k)
+  projected.resize(quads.size());
+  for_each_range(parallel, quads.size(), 1024, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
     {
-      const Eigen::RowVector3d r = Q.row(k) - (Q.row(k).dot(nrm.transpose())) * nrm.transpose();
-      rhs.row(Eigen::Index(q[k])) += r;
+      Eigen::Matrix<double, 4, 3> P;
+      for(int k = 0; k < 4; ++k)
+        P.row(k) = X.row(Eigen::Index(quads[f][k]));
+      const Eigen::RowVector3d c = P.colwise().mean();
+      const Eigen::Matrix<double, 4, 3> Q = P.rowwise() - c;
+      const Eigen::Matrix3d cov = Q.transpose() * Q;
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+      const Eigen::Vector3d nrm = es.eigenvectors().col(0);
+      for(int k = 0; k < 4; ++k)
+        projected[f].row(k) = Q.row(k) - (Q.row(k).dot(nrm.transpose())) * nrm.transpose();
     }
-  }
+  });
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(X.rows(), 3);
+  for(std::size_t f = 0; f < quads.size(); ++f)
+    for(int k = 0; k < 4; ++k)
+      rhs.row(Eigen::Index(quads[f][k])) += projected[f].row(k);
   return rhs;
 }
 
@@ -306,7 +332,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   double dmax, dmean;
   auto closest_points = [&]() {
     const Timer t0;
-    closest(X, S, dmax, dmean);
+    closest(X, S, dmax, dmean, p.parallel);
     result.time_closest += t0.elapsed();
   };
   mesh.planarity(X, result.max_planarity_before, result.mean_planarity_before);
@@ -330,11 +356,24 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   double beta = 1;
   double mx = result.max_planarity_before, mean = result.mean_planarity_before;
   std::size_t it = 0;
+  std::vector<double> max_planarity{ mx };  // after each iteration, the input's first
+  std::vector<Eigen::Matrix<double, 4, 3> > projected;
   while(mx > p.threshold && it < p.max_iterations)
   {
+    // At the pace of the last stall_window iterations, the threshold is out
+    // of reach within the iterations left (or the planarity does not decrease).
+    if(p.stall_window > 0 && it >= p.stall_window)
+    {
+      const double pace = (max_planarity[it - p.stall_window] - mx) / double(p.stall_window);
+      if(!(pace > 0) || (mx - p.threshold) / pace > double(p.max_iterations - it))
+      {
+        result.stalled = true;
+        break;
+      }
+    }
     ++it;
     t = Timer();
-    Eigen::MatrixXd rhs = projected_quads(X, mesh.quads);
+    Eigen::MatrixXd rhs = projected_quads(X, mesh.quads, p.parallel, projected);
     result.time_local += t.elapsed();
     closest_points();
     // closeness (proximal, pulled by beta) and fairness (relaxed by beta)
@@ -349,6 +388,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
     result.time_solve += t.elapsed();
     beta = (std::max)(1e-3, beta * p.closeness_decay);
     mesh.planarity(X, mx, mean);
+    max_planarity.push_back(mx);
   }
   result.iterations = it;
   result.max_planarity_after = mx;

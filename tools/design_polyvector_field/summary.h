@@ -206,8 +206,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";
       else
         std::cout << "; the planarization did NOT reach " << 100 * r.threshold << "% in " << r.iterations
-                  << (r.stalled ? " iterations (stopped: at their pace it would not within the number allowed; it got to max "
-                                : " iterations (it got to max ") << 100 * r.max_planarity_after << "%, mean "
+                  << " iterations (it got to max " << 100 * r.max_planarity_after << "%, mean "
                   << 100 * r.mean_planarity_after << "%): the quad mesh is written as extracted";
     }
     std::cout << "\n";

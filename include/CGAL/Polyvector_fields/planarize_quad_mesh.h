@@ -37,7 +37,6 @@ struct Planarization_result
 {
   std::size_t iterations = 0;                  ///< local-global iterations done
   bool converged = false;                      ///< every face reached `planarity_threshold`
-  bool stalled = false;                        ///< stopped before `number_of_iterations`: at the pace of the last 50 iterations, the threshold was out of reach within them (then `converged` is false)
   double threshold = 0;                        ///< `planarity_threshold` used
   double max_planarity_before = 0;             ///< largest face planarity of the input
   double mean_planarity_before = 0;            ///< mean face planarity of the input
@@ -136,10 +135,7 @@ struct Planarization_result
 ///     \cgalParamDefault{5% of the mean edge length of the input quad mesh (`Planarization_result::mean_edge_length`)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the largest number of iterations. The iterations stop earlier, as
-///                           `DID_NOT_CONVERGE` with `Planarization_result::stalled`, when at the pace of the
-///                           last 50 iterations (the decrease of the largest planarity) the threshold would not
-///                           be reached within this number}
+///     \cgalParamDescription{the largest number of iterations}
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{500}
 ///   \cgalParamNEnd
@@ -161,7 +157,7 @@ struct Planarization_result
 /// \returns `Error_code::SUCCESS` (then `qm` holds the planarized mesh); `EMPTY_MESH` (either mesh);
 ///          `NON_QUAD_FACE`; `NON_TRIANGLE_FACE` (reference); `NON_FINITE_VALUE` (a parameter or a coordinate);
 ///          `INVALID_PARAMETER` (a parameter out of its range); `SOLVER_FAILURE`; `DID_NOT_CONVERGE` when
-///          `number_of_iterations` iterations did not reach the threshold, or would not at their pace (`stalled`); `TOO_FAR_FROM_SURFACE` when they
+///          `number_of_iterations` iterations did not reach the threshold; `TOO_FAR_FROM_SURFACE` when they
 ///          reached it with a vertex farther than `max_distance_to_surface` from `reference`
 ///          (`Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
 ///          `result` holds the measurements either way.

@@ -55,12 +55,6 @@ struct Planarization_parameters
   double fairness_weight = 0.1;    // wf
   double closeness_decay = 0.9;    // the factor of beta at each iteration
   std::size_t max_iterations = 500;
-  // The iterations stop early, as not converged, when at the pace of the last
-  // stall_window iterations (the decrease of the largest planarity) the
-  // threshold would not be reached within max_iterations: the result would
-  // not be used (DID_NOT_CONVERGE) and the rest of the iterations would be
-  // spent for nothing. 0 turns the test off.
-  std::size_t stall_window = 50;
   // The local step and the closest points shared among the cores (TBB):
   // the same numbers as one core, bit for bit (each quad and each vertex is
   // computed alone, and the sums are made in order afterwards).
@@ -356,21 +350,9 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   double beta = 1;
   double mx = result.max_planarity_before, mean = result.mean_planarity_before;
   std::size_t it = 0;
-  std::vector<double> max_planarity{ mx };  // after each iteration, the input's first
   std::vector<Eigen::Matrix<double, 4, 3> > projected;
   while(mx > p.threshold && it < p.max_iterations)
   {
-    // At the pace of the last stall_window iterations, the threshold is out
-    // of reach within the iterations left (or the planarity does not decrease).
-    if(p.stall_window > 0 && it >= p.stall_window)
-    {
-      const double pace = (max_planarity[it - p.stall_window] - mx) / double(p.stall_window);
-      if(!(pace > 0) || (mx - p.threshold) / pace > double(p.max_iterations - it))
-      {
-        result.stalled = true;
-        break;
-      }
-    }
     ++it;
     t = Timer();
     Eigen::MatrixXd rhs = projected_quads(X, mesh.quads, p.parallel, projected);
@@ -388,7 +370,6 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
     result.time_solve += t.elapsed();
     beta = (std::max)(1e-3, beta * p.closeness_decay);
     mesh.planarity(X, mx, mean);
-    max_planarity.push_back(mx);
   }
   result.iterations = it;
   result.max_planarity_after = mx;

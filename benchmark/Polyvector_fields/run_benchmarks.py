@@ -50,6 +50,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import meshing_road  # noqa: E402
+from meshing_road import loglog_exponent, table  # noqa: E402  (one Markdown table writer, one fit)
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 PROGRAMS = ["pvf_design_benchmark", "pvf_frame_field_benchmark", "pvf_quad_benchmark", "pvf_peak_memory",
@@ -160,18 +161,6 @@ def seconds(b):
     return b["real_time"] * unit
 
 
-def loglog_exponent(points):
-    """Least-squares slope of log(time) over log(faces)."""
-    pts = [(math.log(f), math.log(t)) for f, t in points if f > 0 and t > 0]
-    if len(pts) < 2:
-        return float("nan")
-    mx = sum(x for x, _ in pts) / len(pts)
-    my = sum(y for _, y in pts) / len(pts)
-    sxx = sum((x - mx) ** 2 for x, _ in pts)
-    sxy = sum((x - mx) * (y - my) for x, y in pts)
-    return sxy / sxx
-
-
 def fmt(x, digits=3):
     if x is None:
         return "-"
@@ -186,13 +175,6 @@ def split_name(name):
     # "BM_design/CHOLMOD/3/real_time" -> ("BM_design", "CHOLMOD", "3")
     parts = [p for p in name.split("/") if p not in ("real_time",) and not p.startswith("iterations:")]
     return parts
-
-
-def table(header, rows):
-    lines = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
-    for r in rows:
-        lines.append("| " + " | ".join(str(c) for c in r) + " |")
-    return "\n".join(lines)
 
 
 def blas_name():

@@ -82,6 +82,26 @@ std::size_t count_degenerate_faces(const Mesh& tm, typename boost::graph_traits<
   return count;
 }
 
+// Why CGAL::Euler::add_face() refused polygon `i` of `soup`: an edge that
+// already has a face on the same side, or a vertex whose faces cannot take
+// one more fan.
+template <typename TriangleMesh, typename Vertex>
+std::string why_not_added(const Polygon_soup& soup, std::size_t i, const std::vector<Vertex>& vertex,
+                          const TriangleMesh& mesh)
+{
+  const std::size_t n = soup.size(i);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t a = soup.polygon(i)[k], b = soup.polygon(i)[(k + 1) % n];
+    const auto h = halfedge(vertex[a], vertex[b], mesh);
+    if(h.second && face(h.first, mesh) != boost::graph_traits<TriangleMesh>::null_face())
+      return "its edge from " + soup.vertex_name(a) + " to " + soup.vertex_name(b) +
+             " already has a face on that side, so it would have more than two faces (a surface has at most two;"
+             " a volume mesh, or faces inside the solid, has more)";
+  }
+  return "one of its vertices would join two separate fans of faces (a pinched vertex)";
+}
+
 // The mesh of the soup, face by face in soup order; `source_of` (a dynamic
 // property of `mesh`, so that it follows the faces through triangulation and
 // garbage collection) receives the file face `source[i]` of each face.
@@ -110,7 +130,8 @@ Error_code add_soup_faces(const Polygon_soup& soup, const std::vector<std::size_
       polygon.push_back(vertex[soup.polygon(i)[k]]);
     const face_descriptor f = CGAL::Euler::add_face(polygon, mesh);
     if(f == Graph_traits::null_face())
-      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH, soup.face_name(i) + " cannot be added to the surface");
+      return diagnostic.fail(Error_code::NON_MANIFOLD_MESH,
+                             soup.face_name(i) + " cannot be added to the surface: " + why_not_added(soup, i, vertex, mesh));
     put(source_of, f, source[i]);
   }
   return Error_code::SUCCESS;

@@ -1165,6 +1165,44 @@ void quad_identity_map(const Mesh& tm, Quad_uv_map uv)
       uv[h] = { tm.point(target(h, tm)).x(), tm.point(target(h, tm)).y() };
 }
 
+// A map whose every triangle is positive but which covers the plane twice around a
+// vertex off the integer grid (a branch point, as z^2): a fold-over, found by the turn
+// of the vertex's star (4 pi), not an integer-grid map with an 8-direction vertex.
+// The border winds twice too, so no re-embedding inside it can unfold the disk.
+TEST(QuadFoldOvers, BranchPointIsAFoldOver)
+{
+  const std::size_t n = 8;
+  std::vector<std::array<double, 2> > points{ { 0, 0 } };
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    points.push_back({ std::cos(2 * pi * double(k) / double(n)), std::sin(2 * pi * double(k) / double(n)) });
+    triangles.push_back({ 0, 1 + k, 1 + (k + 1) % n });
+  }
+  Mesh tm = quad_flat_mesh(points, triangles);
+  auto uv = tm.add_property_map<Halfedge, UV>("h:uv").first;
+  const double radius = 3, cx = 0.5, cy = 0.25;  // the centre off the integer grid
+  for(Halfedge h : halfedges(tm))
+    if(!CGAL::is_border(h, tm))
+    {
+      const Point p = tm.point(target(h, tm));
+      const double angle = 2 * std::atan2(p.y(), p.x());  // twice the angle: each 45-degree corner is 90 in uv
+      const bool centre = p.x() == 0 && p.y() == 0;
+      uv[h] = { cx + (centre ? 0 : radius * std::cos(angle)), cy + (centre ? 0 : radius * std::sin(angle)) };
+    }
+  for(Face f : faces(tm))
+  {
+    const Halfedge h = halfedge(f, tm);
+    const UV a = uv[h], b = uv[next(h, tm)], c = uv[prev(h, tm)];
+    ASSERT_GT((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]), 0);  // no triangle is flipped
+  }
+  Mesh qm;
+  PVF::Quad_extraction_result r;
+  EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r), PVF::Error_code::UNREPAIRABLE_FOLD_OVER) << r.diagnostic;
+  EXPECT_EQ(r.flipped_faces, n);  // the star of the branch point
+  EXPECT_EQ(num_faces(qm), 0u);
+}
+
 // Polygon (counterclockwise, integer corners) -> triangles by ear clipping with exact
 // integer orientation tests: coarse triangles whose edges run along grid lines and through
 // lattice points.

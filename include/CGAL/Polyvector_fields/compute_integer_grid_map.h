@@ -92,7 +92,7 @@ struct Integer_grid_map_result
   std::size_t released_feature_edges = 0; ///< of them, left free because faces around them stayed flipped with them aligned (see <b>Features</b>)
   std::size_t feature_vertices = 0;       ///< vertices on an aligned feature edge
   std::size_t feature_corners = 0;        ///< of them, regular vertices put on an integer point: the field follows two feature curves there, or one that turns (see Features)
-  std::size_t flipped_faces = 0;          ///< faces with det(grad uv) <= 0 in the output
+  std::size_t flipped_faces = 0;          ///< faces that the output does not lay out injectively: det(grad uv) <= 0, or around a vertex whose star winds the wrong number of turns (see <b>Flips</b>)
   std::vector<std::size_t> flipped_per_round;  ///< flipped faces after each stiffening round
   std::size_t stiffening_rounds = 0;      ///< solves after the first one
   std::size_t integer_roundings = 0;      ///< solves that rounded the integer unknowns (the first, and the stiffening rounds after one that did not remove flips); the other rounds keep the integers and solve for the continuous unknowns only
@@ -299,6 +299,17 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// solved again, at most 3 times (`released_feature_edges`). The quad size
 /// must resolve the features for them all to be kept.
 ///
+/// <b>Flips.</b> A face is flipped when its map has `det(grad uv) <= 0`, and
+/// also when every face around one of its vertices is positive but the star of
+/// that vertex turns by the wrong angle in the map. Around an interior vertex,
+/// the star must turn `(4 - k) pi / 2` for a cone of index `k/4`, and `2 pi`
+/// for a regular vertex. A regular vertex whose star turns `4 pi` is a branch
+/// point: the map covers the plane twice there. A border vertex off the integer
+/// grid must turn less than `2 pi`. A star with a corner angle within `1e-6` of
+/// 0 or `pi` is left to the exact tests of `extract_quad_mesh()`. The
+/// stiffening, the release of features and `result.flipped_faces` count both
+/// kinds.
+///
 /// <b>Solve.</b> The continuous block is factored once per round (sparse SPD,
 /// `sparse_linear_solver`); the integer unknowns are eliminated through their
 /// Schur complement (dense, small), rounded greedily (closest to an integer
@@ -306,7 +317,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// rounding. Two integer points of one face (singular vertices, feature
 /// corners) are kept apart: when the nearest integer of the last free unknown
 /// of their difference would make them meet, the integer on the other side of
-/// the minimiser is taken (`integer_point_collisions_avoided`). Then faces with `det(grad uv) <= 0` and the faces around them get
+/// the minimiser is taken (`integer_point_collisions_avoided`). Then the flipped faces (see <b>Flips</b>) and the faces around them get
 /// a larger weight and the problem is solved again, at most
 /// `number_of_iterations` times (stiffening); the round with the fewest flips is kept.
 /// A stiffening round keeps the integers of the last rounding and solves for

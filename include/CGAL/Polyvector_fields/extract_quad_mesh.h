@@ -38,7 +38,7 @@ namespace Polyvector_fields {
 struct Quad_extraction_result
 {
   // input map
-  std::size_t flipped_faces = 0;          ///< triangles with det(uv) <= 0 in the input map (fold-overs)
+  std::size_t flipped_faces = 0;          ///< triangles of the input map that fold: det(uv) <= 0, or around a wound vertex (see <b>Fold-overs</b>)
   std::size_t degenerate_uv_faces = 0;    ///< of which det(uv) == 0
   std::size_t repaired_regions = 0;       ///< fold-over regions re-embedded
   std::size_t repaired_vertices = 0;      ///< vertices whose uv the repair moved
@@ -122,7 +122,13 @@ struct Quad_extraction_result
 ///
 /// <b>Fold-overs.</b> Triangles with `det <= 0` are repaired before extraction:
 /// they and up to `fold_over_repair_rings` rings around them are re-embedded
-/// (Tutte, ring boundary fixed, exact transitions). Reported in `result`.
+/// (Tutte, ring boundary fixed, exact transitions). So are the triangles
+/// around a wound vertex: a vertex off the integer grid, every triangle
+/// around it positive, and either interior, with no cone there, with a star
+/// that does not turn `2 pi` (for example `4 pi`: the map covers the plane
+/// twice there), or on the border with a star that turns `2 pi` or more.
+/// Reported in `result`; what the repair cannot unfold makes the call fail with
+/// `UNREPAIRABLE_FOLD_OVER`.
 ///
 /// <b>Folded quads.</b> Every quad is checked against the input surface under it: it is
 /// folded when neither of its diagonals splits it into two triangles that face the side

@@ -96,7 +96,47 @@ struct Guidance_system
   std::vector<double> area;                                 // per face
   std::vector<std::array<double, 4> > target;               // per face: J*_f by rows
   std::vector<std::array<std::complex<double>, 3> > gradient;  // per face: grad of the hat function of each corner
+  // the stars checked for winding by flipped_faces(): the corners whose target is
+  // vertex v are star_corner[star_begin[v] .. star_begin[v + 1]) (none for a vertex
+  // that is not checked). An interior vertex's star must turn star_quarter_turns[v]
+  // quarter turns in the map (4 - k for a cone of index k/4, 4 for a regular
+  // vertex); a border vertex off the integer grid has star_quarter_turns[v] < 0 and
+  // must turn less than a full turn.
+  std::vector<std::size_t> star_begin, star_corner;
+  std::vector<int> star_quarter_turns;
 };
+
+// The stars of the vertices checked for winding (see Guidance_system): the interior
+// vertices, and the border vertices that are not integer points (whose values have a
+// continuous unknown).
+template <typename CornerMesh>
+void assemble_stars(const CornerMesh& M, const Comb_data& D, const Seamless_reduction& R, Guidance_system& S)
+{
+  std::vector<char> checked(M.V, 0);
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+  {
+    const std::size_t v = M.target[c];
+    if(!M.border_vertex[v])
+      checked[v] = 1;
+    else
+      for(const Corner_term& t : R.corner_terms[c])
+        checked[v] = checked[v] || t.column < R.continuous_columns;
+  }
+  S.star_begin.assign(M.V + 1, 0);
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    if(checked[M.target[c]])
+      ++S.star_begin[M.target[c] + 1];
+  for(std::size_t v = 0; v < M.V; ++v)
+    S.star_begin[v + 1] += S.star_begin[v];
+  S.star_corner.assign(S.star_begin[M.V], 0);
+  std::vector<std::size_t> fill(S.star_begin.begin(), S.star_begin.end() - 1);
+  for(std::size_t c = 0; c < 3 * M.F; ++c)
+    if(checked[M.target[c]])
+      S.star_corner[fill[M.target[c]]++] = c;
+  S.star_quarter_turns.assign(M.V, 4);
+  for(std::size_t v = 0; v < M.V; ++v)
+    S.star_quarter_turns[v] = M.border_vertex[v] ? -1 : 4 - D.index[v];
+}
 
 template <typename CornerMesh>
 void assemble_guidance(const CornerMesh& M, const Comb_data& D, const Seamless_reduction& R, double h, std::size_t columns,
@@ -147,6 +187,7 @@ void assemble_guidance(const CornerMesh& M, const Comb_data& D, const Seamless_r
   }
   S.B1.resize(Eigen::Index(4 * F), Eigen::Index(columns));
   S.B1.setFromTriplets(triplets.begin(), triplets.end());
+  assemble_stars(M, D, R, S);
 }
 
 // uv of every corner for a vector of unknowns
@@ -188,7 +229,18 @@ inline double guidance_energy(const Guidance_system& S, const std::vector<Comple
   return E;
 }
 
-// faces with det(grad uv) <= 0
+// The smallest uv corner angle, in radians, with which a star is checked for winding.
+constexpr double min_star_angle = 1e-6;
+
+// The faces that the map does not lay out injectively: the faces with
+// det(grad uv) <= 0, the faces around an interior vertex whose star turns by
+// another multiple of pi/2 than its cone angle (Guidance_system::star_quarter_turns),
+// for instance twice around a regular vertex: each of its faces is positive,
+// but the map covers the plane twice there (a branch point), and the quads of
+// such a map have a vertex of 8 edges off the integer grid; and the faces
+// around a border vertex off the integer grid whose star turns a full turn or
+// more: the border overlaps itself there, and an iso-line along it would leave
+// the vertex into two faces.
 inline std::size_t flipped_faces(const Guidance_system& S, const std::vector<Complex>& uv, std::vector<char>& flag)
 {
   const std::size_t F = S.area.size();
@@ -202,6 +254,41 @@ inline std::size_t flipped_faces(const Guidance_system& S, const std::vector<Com
     {
       flag[f] = 1;
       ++count;
+    }
+  }
+  // a star with a face of det <= 0 is flagged already, and its angles can be undefined
+  const std::vector<char> negative = flag;
+  const std::size_t V = S.star_quarter_turns.size();
+  for(std::size_t v = 0; v < V; ++v)
+  {
+    const std::size_t begin = S.star_begin[v], end = S.star_begin[v + 1];
+    bool positive = begin != end;
+    for(std::size_t i = begin; i < end && positive; ++i)
+      positive = !negative[S.star_corner[i] / 3];
+    if(!positive)
+      continue;
+    // the sum of the uv corner angles at v; a star with a corner of (nearly) zero
+    // or straight angle, a face collapsed to a segment that round-off left positive,
+    // is left to the extraction, which tests such faces exactly
+    double turn = 0;
+    for(std::size_t i = begin; i < end && positive; ++i)
+    {
+      const std::size_t c = S.star_corner[i], first = c - c % 3;
+      const Complex p = uv[c], a = uv[first + (c % 3 + 1) % 3] - p, b = uv[first + (c % 3 + 2) % 3] - p;
+      const double angle = std::arg(b * std::conj(a));
+      positive = angle > min_star_angle && angle < CGAL_PI - min_star_angle;
+      turn += angle;
+    }
+    if(!positive)
+      continue;
+    if(S.star_quarter_turns[v] < 0 ? turn < 2 * CGAL_PI - min_star_angle
+                                   : std::abs(turn / (CGAL_PI / 2) - double(S.star_quarter_turns[v])) < 0.5)
+      continue;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      const std::size_t f = S.star_corner[i] / 3;
+      count += flag[f] == 0;
+      flag[f] = 1;
     }
   }
   return count;

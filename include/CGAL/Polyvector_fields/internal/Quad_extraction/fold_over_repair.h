@@ -43,7 +43,8 @@ namespace qex {
 // ---------------------------------------------------------------------------
 struct Fold_over_result
 {
-  std::size_t flipped_faces = 0;      // faces with det <= 0 in the input map
+  std::size_t flipped_faces = 0;      // faces with det <= 0 in the input map, and the faces
+                                      // around its wound vertices (see wound_vertex())
   std::size_t degenerate_faces = 0;   // of which det == 0
   std::size_t regions = 0;            // regions repaired
   std::size_t moved_vertices = 0;
@@ -59,6 +60,50 @@ inline bool trivial_holonomy(const Chart_mesh& M, std::size_t v)
     return false;
   const Grid_map around = compose(M.trans[Chart_mesh::prev(fan.back())], M.fan_map[v].back());
   return around == Grid_map();
+}
+
+// Is the vertex v wound: off the integer grid, every face around it positive, and
+// - interior, with a trivial holonomy (not a cone), yet its star turns by another angle
+//   than 2 pi in the map, for instance 4 pi (a branch point: the map covers the plane
+//   twice there, and find_integer_points() would see 8 directions at a vertex that is
+//   no quad corner);
+// - or on the border, and its star turns by 2 pi or more: the border overlaps itself
+//   there, and a trace along it would leave the vertex into two sectors.
+inline bool wound_vertex(const Chart_mesh& M, std::size_t v)
+{
+  const auto& fan = M.fan[v];
+  if(fan.empty())
+    return false;
+  const P2& x = M.uv[fan[0]];
+  if(x[0] == std::floor(x[0]) && x[1] == std::floor(x[1]))
+    return false;
+  if(!M.border_vertex[v] && !trivial_holonomy(M, v))
+    return false;
+  double turn = 0;
+  for(std::size_t c : fan)
+  {
+    if(M.face_orientation(Chart_mesh::face(c)) <= 0)
+      return false;  // a fold-over already
+    const P2 &p = M.uv[c], &q1 = M.uv[Chart_mesh::next(c)], &q2 = M.uv[Chart_mesh::prev(c)];
+    const double ax = q1[0] - p[0], ay = q1[1] - p[1], bx = q2[0] - p[0], by = q2[1] - p[1];
+    turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  }
+  if(M.border_vertex[v])
+    return !(turn < 2 * CGAL_PI - 1e-9);
+  return !(std::abs(turn - 2 * CGAL_PI) < CGAL_PI / 4);
+}
+
+// The faces that the map does not lay out injectively: det <= 0, or around a wound vertex.
+inline std::vector<char> folded_faces(const Chart_mesh& M)
+{
+  std::vector<char> folded(M.F, 0);
+  for(std::size_t f = 0; f < M.F; ++f)
+    folded[f] = M.face_orientation(f) <= 0;
+  for(std::size_t v = 0; v < M.V; ++v)
+    if(wound_vertex(M, v))
+      for(std::size_t c : M.fan[v])
+        folded[Chart_mesh::face(c)] = 1;
+  return folded;
 }
 
 // Tutte's embedding with a connection: each free vertex v has its uv X_v in the chart of
@@ -430,23 +475,24 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
 inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_over_result& report)
 {
   report = Fold_over_result();
-  std::vector<char> flipped(M.F, 0);
   std::size_t positive = 0;
   for(std::size_t f = 0; f < M.F; ++f)
   {
     const int o = M.face_orientation(f);
-    flipped[f] = o <= 0;
-    report.flipped_faces += o <= 0;
     report.degenerate_faces += o == 0;
     positive += o != 0;
   }
   if(positive == 0)
     return Error_code::NOT_AN_INTEGER_GRID_MAP;  // no map at all: every triangle has zero uv area
+  std::vector<char> folded = folded_faces(M);
+  report.flipped_faces = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
   for(std::size_t rings = 1; rings <= max_rings; ++rings)
   {
+    if(rings > 1)
+      folded = folded_faces(M);
     std::vector<std::size_t> bad;
     for(std::size_t f = 0; f < M.F; ++f)
-      if(M.face_orientation(f) <= 0)
+      if(folded[f])
         bad.push_back(f);
     if(bad.empty())
       break;
@@ -485,7 +531,7 @@ inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_o
         }
       bool has_bad = false;
       for(std::size_t f : region)
-        has_bad = has_bad || M.face_orientation(f) <= 0;
+        has_bad = has_bad || folded[f];
       if(!has_bad)
         continue;
       std::vector<char> mask(M.F, 0);
@@ -495,8 +541,8 @@ inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_o
         repair_region(M, region, mask, report, 2);
     }
   }
-  for(std::size_t f = 0; f < M.F; ++f)
-    report.remaining += M.face_orientation(f) <= 0;
+  folded = folded_faces(M);
+  report.remaining = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
   if(report.remaining != 0)
     return Error_code::UNREPAIRABLE_FOLD_OVER;
   return Error_code::SUCCESS;

@@ -1199,7 +1199,8 @@ TEST(QuadFoldOvers, BranchPointIsAFoldOver)
   Mesh qm;
   PVF::Quad_extraction_result r;
   EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r), PVF::Error_code::UNREPAIRABLE_FOLD_OVER) << r.diagnostic;
-  EXPECT_EQ(r.flipped_faces, n);  // the star of the branch point
+  EXPECT_EQ(r.flipped_faces, n);      // the star of the branch point
+  EXPECT_EQ(r.repaired_regions, 0u);  // no re-embedding inside the doubly wound border unfolds it
   EXPECT_EQ(num_faces(qm), 0u);
 }
 

@@ -62,7 +62,11 @@ Error_code repair_and_count_seams(Chart_mesh& M, bool given_transitions, std::si
   Fold_over_result fo;
   Error_code code = repair_fold_overs(M, rings, fo);
   if(code != Error_code::SUCCESS)
-    result.diagnostic = fo.remaining ? "fold-overs left after the repair" : "every triangle has zero uv area";
+    result.diagnostic = fo.remaining ? "fold-overs left after the repair: " + std::to_string(fo.remaining) +
+                                         " triangles still fold after re-embedding up to " + std::to_string(rings) +
+                                         " rings around the " + std::to_string(fo.flipped_faces) +
+                                         " that folded in the map"
+                                     : "every triangle has zero uv area";
   result.flipped_faces = fo.flipped_faces;
   result.degenerate_uv_faces = fo.degenerate_faces;
   result.repaired_regions = fo.regions;

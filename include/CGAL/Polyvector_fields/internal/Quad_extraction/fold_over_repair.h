@@ -39,7 +39,8 @@ namespace qex {
 // are unfolded into one chart through the exact transitions, their inner vertices
 // are placed by Tutte's barycentric embedding with the ring boundary fixed, and the
 // values are snapped to a dyadic grid and mapped back into each face's chart by the
-// same exact transitions. A region is kept only if all its faces come out positive.
+// same exact transitions. A region is kept only if all its faces come out positive
+// and none of its vertices is wound (wound_vertex()).
 // ---------------------------------------------------------------------------
 struct Fold_over_result
 {
@@ -307,16 +308,22 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
       for(std::size_t k = 0; k < 3; ++k)
         M.uv[3 * f + k] = saved[i++];
   };
-  auto all_positive = [&]() {
+  // every face positive and no wound vertex left: a re-embedding that leaves the
+  // branch point of a region with no reversed face as it was is no repair
+  auto unfolded = [&]() {
     for(std::size_t f : region)
       if(M.face_orientation(f) <= 0)
         return false;
+    for(std::size_t f : region)
+      for(std::size_t k = 0; k < 3; ++k)
+        if(wound_vertex(M, M.vertex[3 * f + k]))
+          return false;
     return true;
   };
   if(!tutte)
   {
     untangle(M, free_vertices, 20);
-    if(!all_positive())
+    if(!unfolded())
     {
       restore();
       return false;
@@ -445,7 +452,7 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
       M.uv[c] = M.fan_map[v][M.fan_pos[c]](p);
     }
   untangle(M, free_vertices, 20);
-  bool ok = all_positive();
+  bool ok = unfolded();
 #ifdef CGAL_PVF_QEX_DEBUG
   {
     std::size_t bad = 0;

@@ -63,6 +63,21 @@ inline bool trivial_holonomy(const Chart_mesh& M, std::size_t v)
   return around == Grid_map();
 }
 
+// The angle by which the star of vertex v turns in the map: the sum of its signed uv
+// corner angles (for an interior vertex, a multiple of pi/2 up to round-off, even
+// with flipped corners).
+inline double star_turn(const Chart_mesh& M, std::size_t v)
+{
+  double turn = 0;
+  for(std::size_t c : M.fan[v])
+  {
+    const P2 &p = M.uv[c], &q1 = M.uv[Chart_mesh::next(c)], &q2 = M.uv[Chart_mesh::prev(c)];
+    const double ax = q1[0] - p[0], ay = q1[1] - p[1], bx = q2[0] - p[0], by = q2[1] - p[1];
+    turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  }
+  return turn;
+}
+
 // Is the vertex v wound: off the integer grid, every face around it positive, and
 // - interior, with a trivial holonomy (not a cone), yet its star turns by another angle
 //   than 2 pi in the map, for instance 4 pi (a branch point: the map covers the plane
@@ -80,15 +95,10 @@ inline bool wound_vertex(const Chart_mesh& M, std::size_t v)
     return false;
   if(!M.border_vertex[v] && !trivial_holonomy(M, v))
     return false;
-  double turn = 0;
   for(std::size_t c : fan)
-  {
     if(M.face_orientation(Chart_mesh::face(c)) <= 0)
       return false;  // a fold-over already
-    const P2 &p = M.uv[c], &q1 = M.uv[Chart_mesh::next(c)], &q2 = M.uv[Chart_mesh::prev(c)];
-    const double ax = q1[0] - p[0], ay = q1[1] - p[1], bx = q2[0] - p[0], by = q2[1] - p[1];
-    turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
-  }
+  const double turn = star_turn(M, v);
   if(M.border_vertex[v])
     return !(turn < 2 * CGAL_PI - 1e-9);
   return !(std::abs(turn - 2 * CGAL_PI) < CGAL_PI / 4);
@@ -211,16 +221,8 @@ inline bool spread_cone_star(Chart_mesh& M, std::size_t v, const std::vector<cha
   const std::size_t n = fan.size();
   if(M.border_vertex[v] || n < 3)
     return false;
-  // the cone's angle in the map: the sum of the signed uv corner angles (a multiple of
-  // pi/2 up to round-off, even with flipped corners)
-  double signed_sum = 0;
-  for(std::size_t c : fan)
-  {
-    const P2 &p = M.uv[c], &q1 = M.uv[Chart_mesh::next(c)], &q2 = M.uv[Chart_mesh::prev(c)];
-    const double ax = q1[0] - p[0], ay = q1[1] - p[1], bx = q2[0] - p[0], by = q2[1] - p[1];
-    signed_sum += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
-  }
-  const double total = std::round(signed_sum / (CGAL_PI / 2)) * (CGAL_PI / 2);
+  // the cone's angle in the map, fixed by its holonomy
+  const double total = std::round(star_turn(M, v) / (CGAL_PI / 2)) * (CGAL_PI / 2);
   if(!(total > 0))
     return false;
   std::vector<double> alpha(n), length3(n);

@@ -64,15 +64,25 @@ int run(const Options& o)
   const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
   Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
   Quad_stage quads;
-  // A map without flipped faces whose extraction still finds fold-overs it
-  // cannot repair (degenerate triangles): the map again, with the integers
-  // rounded in every stiffening round (another search). A map with flipped
-  // faces had that search already (compute_integer_grid_map()).
-  if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, param.result.flipped_faces == 0))
+  try
   {
-    param = parametrize(o, input.tm, size, constraints, field, clock, false);
-    quads = Quad_stage();
-    make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+    // A map without flipped faces whose extraction still finds fold-overs it
+    // cannot repair (degenerate triangles): the map again, with the integers
+    // rounded in every stiffening round (another search). A map with flipped
+    // faces had that search already (compute_integer_grid_map()).
+    if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, param.result.flipped_faces == 0))
+    {
+      param = parametrize(o, input.tm, size, constraints, field, clock, false);
+      quads = Quad_stage();
+      make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+    }
+  }
+  catch(const Failure&)
+  {
+    // What the stages before it made (the map's flips and features, say), so
+    // that the error that follows can be read against them; no file is written.
+    print_summary(o, input, size, constraints, field, analysis, param, quads, outputs, clock, false);
+    throw;
   }
   write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
   print_summary(o, input, size, constraints, field, analysis, param, quads, outputs, clock);

@@ -61,7 +61,7 @@ std::string solver_report(const PVF::Default_sparse_solver& solver)
 
 void print_summary(const Options& o, const Input_mesh& input, const Quad_size& size, const Constraint_set& constraints,
                    const Field& field, const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
-                   const Stopwatch& clock)
+                   const Stopwatch& clock, bool written = true)
 {
   const Mesh& tm = input.tm;
   const PVF::IO::Mesh_repair_result& r = input.report;
@@ -219,6 +219,11 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
       std::cout << " " << stage << " " << std::fixed << std::setprecision(3) << clock.times.at(stage) << ";";
   std::cout << " (design: assembly " << field.statistics.assembly << ", factorization " << field.statistics.factorization
             << ", solve " << field.statistics.solve << ")\n";
+  if(!written)
+  {
+    std::cout << "wrote           nothing: the quad mesh could not be made (the error follows)\n";
+    return;
+  }
   for(const std::string& out : outputs.destinations())
     std::cout << "wrote           " << out << "\n";
 }

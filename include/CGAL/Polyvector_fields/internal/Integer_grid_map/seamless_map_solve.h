@@ -468,6 +468,14 @@ void stiffen(const CornerMesh& M, const Guidance_system& S, const std::vector<st
 // rare, and each round costs a factorization.
 constexpr std::size_t stiffening_patience = 8;
 
+// The solution of the first round, with unit weights: the same in every call
+// of run_stiffening_rounds() on one system, so it is computed once.
+struct Unit_weight_round
+{
+  bool made = false;
+  Eigen::VectorXd y_continuous, y_rounded;
+};
+
 // Rounds of solves: the first one, then stiffening while faces flip. The
 // first round rounds the integers. With keep_integers, a stiffening round
 // keeps the integers of the last rounding and solves for the continuous
@@ -482,7 +490,7 @@ template <typename CornerMesh, typename Solver, typename Report>
 Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, std::size_t m,
                              const Seamless_map_parameters& p, bool keep_integers, const Seamless_reduction& R,
                              const std::vector<std::vector<std::size_t> >& vertex_faces,
-                             Mixed_integer_system<Solver>& system, Eigen::VectorXd& best_y,
+                             Mixed_integer_system<Solver>& system, Unit_weight_round& unit, Eigen::VectorXd& best_y,
                              std::size_t& best_flips, double& best_energy, Report& result)
 {
   const std::size_t F = M.F;
@@ -498,8 +506,18 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
     for(std::size_t f = 0; f < F; ++f)
       for(int k = 0; k < 4; ++k)
         row_weight[4 * f + std::size_t(k)] = std::sqrt(weight[f]);
-    Error_code code = system.set_weights(row_weight, result);
-    if(code == Error_code::SUCCESS)
+    Error_code code = Error_code::SUCCESS;
+    const bool reused = round == 0 && unit.made;
+    if(reused)
+    {
+      // the first round of an earlier call: the same weights, the same solution
+      y_cont = unit.y_continuous;
+      y_round = unit.y_rounded;
+      integers = y_round.tail(Eigen::Index(m));
+    }
+    else
+      code = system.set_weights(row_weight, result);
+    if(code == Error_code::SUCCESS && !reused)
     {
       if(round_integers)
       {
@@ -512,6 +530,12 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
     }
     if(code != Error_code::SUCCESS)
       return code;
+    if(round == 0 && !reused)
+    {
+      unit.y_continuous = y_cont;
+      unit.y_rounded = y_round;
+      unit.made = true;
+    }
     if(round == 0 && result.flipped_per_round.empty())
     {
       corner_uv(R, y_cont, uv);
@@ -532,7 +556,7 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
       best_energy = E;
       best_y = y_round;
     }
-    if(round > 0 || result.flipped_per_round.size() > 1)
+    if(!reused && (round > 0 || result.flipped_per_round.size() > 1))
     {
       ++result.stiffening_rounds;
       result.time_stiffening += seconds_since(round_start);
@@ -552,7 +576,8 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
 // rounds that keep the integers; when faces still flip after them, the rounds
 // again from unit weights, rounding the integers in every round (a wider
 // search: on fandisk the fast rounds left a flip that released two sharp
-// edges, the second search none). best_y is the best of all rounds.
+// edges, the second search none). best_y is the best of all rounds. The first
+// round of both, with unit weights, is solved once.
 template <typename CornerMesh, typename Solver, typename Report>
 Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, std::size_t nx, std::size_t m,
                                  const Seamless_map_parameters& p, const Solver& solver_prototype,
@@ -563,12 +588,14 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
   for(std::size_t c = 0; c < 3 * M.F; ++c)
     vertex_faces[M.target[c]].push_back(CornerMesh::face(c));
   Mixed_integer_system<Solver> system(S.B1, S.d1, nx, m, distinct, solver_prototype);
+  Unit_weight_round unit;
   std::size_t best_flips = std::numeric_limits<std::size_t>::max();
   double best_energy = 0;
-  Error_code code = run_stiffening_rounds(M, S, m, p, p.keep_integers, R, vertex_faces, system, best_y, best_flips,
-                                      best_energy, result);
+  Error_code code = run_stiffening_rounds(M, S, m, p, p.keep_integers, R, vertex_faces, system, unit, best_y,
+                                          best_flips, best_energy, result);
   if(code == Error_code::SUCCESS && p.keep_integers && best_flips > 0)
-    code = run_stiffening_rounds(M, S, m, p, false, R, vertex_faces, system, best_y, best_flips, best_energy, result);
+    code = run_stiffening_rounds(M, S, m, p, false, R, vertex_faces, system, unit, best_y, best_flips, best_energy,
+                                 result);
   return code;
 }
 

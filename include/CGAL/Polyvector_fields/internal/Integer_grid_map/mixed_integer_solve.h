@@ -341,7 +341,6 @@ Error_code Mixed_integer_system<SolverTraits>::round(bool refactor_per_rounding,
     return code;
   t = std::chrono::steady_clock::now();
 
-  std::vector<char> free_var(m, 1);
   Collision_guard guard(m_distinct, m);
   if(!refactor_per_rounding)
   {
@@ -399,6 +398,7 @@ Error_code Mixed_integer_system<SolverTraits>::round(bool refactor_per_rounding,
   // Reference: after each rounding, refactor the system of the remaining
   // unknowns, made from the weighted rows.
   result.time_rounding += seconds_since(t);
+  std::vector<char> free_var(m, 1);
   Eigen::SparseMatrix<double> B = m_B1;
   Eigen::VectorXd d = m_d1;
   for(Eigen::Index k = 0; k < B.outerSize(); ++k)

@@ -557,6 +557,155 @@ TEST(SolverAgreement, CholmodFactorizationRefusesIndefiniteMatrices)
   ASSERT_TRUE(negative.analyze(B));
   EXPECT_FALSE(negative.factorize(B));
 }
+
+// The shifted Laplacian of a k x k grid (a real symmetric positive definite
+// matrix whose factor has the elimination tree of a surface mesh's), both
+// triangles stored.
+Eigen::SparseMatrix<double> grid_matrix(int k, double shift)
+{
+  std::vector<Eigen::Triplet<double> > t;
+  auto edge = [&t](int a, int b, double w) {
+    t.emplace_back(a, a, w);
+    t.emplace_back(b, b, w);
+    t.emplace_back(a, b, -w);
+    t.emplace_back(b, a, -w);
+  };
+  for(int i = 0; i < k; ++i)
+    for(int j = 0; j < k; ++j)
+    {
+      t.emplace_back(i * k + j, i * k + j, shift);
+      if(i + 1 < k)
+        edge(i * k + j, (i + 1) * k + j, 1 + 0.5 * std::sin(0.37 * i + 0.11 * j));  // varied coefficients
+      if(j + 1 < k)
+        edge(i * k + j, i * k + j + 1, 1.0);
+    }
+  Eigen::SparseMatrix<double> A(k * k, k * k);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+// m sparse columns of 1 to 4 random entries; column 3 is zero.
+Eigen::SparseMatrix<double> sparse_columns(Eigen::Index n, Eigen::Index m, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<Eigen::Index> row(0, n - 1);
+  std::uniform_int_distribution<int> count(1, 4);
+  std::uniform_real_distribution<double> value(-1, 1);
+  std::vector<Eigen::Triplet<double> > t;
+  for(Eigen::Index j = 0; j < m; ++j)
+    if(j != 3)
+      for(int c = count(random); c > 0; --c)
+        t.emplace_back(row(random), j, value(random));
+  Eigen::SparseMatrix<double> C(n, m);
+  C.setFromTriplets(t.begin(), t.end());
+  C.makeCompressed();
+  return C;
+}
+
+// G = C^T A^-1 C by full solves of Eigen's own SimplicialLDLT: the reference.
+Eigen::MatrixXd reference_congruence(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& C)
+{
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt(A);
+  const Eigen::MatrixXd X = ldlt.solve(Eigen::MatrixXd(C));
+  return Eigen::MatrixXd(C.transpose()) * X;
+}
+
+// G = C^T A^-1 C by CHOLMOD's sparse forward solves (the Schur complement of
+// the integer-grid map's integer unknowns) against full solves of another
+// solver, for a supernodal LL^T factor and a simplicial LDL^T one. The
+// supernodal factor is converted on a copy only: it still solves, and
+// refactors with new values, as before.
+template <typename Eigen_cholmod>
+void check_inverse_congruence(const char* name, bool supernodal)
+{
+  SCOPED_TRACE(name);
+  typedef typename PVF::internal::Eigen_cholmod_solver<Eigen_cholmod> Access;
+  static_assert(Access::value, "Eigen's CHOLMOD solvers on real matrices expose their factor");
+  const Eigen::SparseMatrix<double> A = grid_matrix(150, 1e-3), C = sparse_columns(A.rows(), 40, 7);
+  typename Access::Solver solver;
+  solver.compute(A);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  ASSERT_EQ(bool(solver.factor()->is_super), supernodal);
+  Eigen::MatrixXd G;
+  ASSERT_TRUE(Access::inverse_congruence(solver, C, G));
+  EXPECT_EQ(bool(solver.factor()->is_super), supernodal);
+  const Eigen::MatrixXd R = reference_congruence(A, C);
+  ASSERT_EQ(G.rows(), 40);
+  ASSERT_EQ(G.cols(), 40);
+  EXPECT_LT((G - R).cwiseAbs().maxCoeff(), 1e-10 * R.cwiseAbs().maxCoeff());
+  EXPECT_EQ(G, G.transpose());
+  EXPECT_EQ(G.row(3).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(R.cwiseAbs().maxCoeff(), 1.0);  // a matrix worth comparing
+
+  // The factor still solves, and refactors with new values.
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -1, 1);
+  const Eigen::VectorXd x = solver.solve(b);
+  EXPECT_LT((A * x - b).norm(), 1e-9 * b.norm());
+  const Eigen::SparseMatrix<double> A2 = grid_matrix(150, 0.5);
+  solver.factorize(A2);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  ASSERT_TRUE(Access::inverse_congruence(solver, C, G));
+  const Eigen::MatrixXd R2 = reference_congruence(A2, C);
+  EXPECT_LT((G - R2).cwiseAbs().maxCoeff(), 1e-10 * R2.cwiseAbs().maxCoeff());
+  EXPECT_GT((R2 - R).cwiseAbs().maxCoeff(), 0.1 * R.cwiseAbs().maxCoeff());  // the new values changed G
+}
+
+TEST(SolverAgreement, CholmodInverseCongruenceMatchesFullSolves)
+{
+  check_inverse_congruence<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> >("supernodal", true);
+  check_inverse_congruence<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> >("simplicial LDL^T",
+                                                                                                     false);
+  // The concept's optional operation, on the default solver of the
+  // integer-grid map (Default_real_sparse_solver when CHOLMOD is linked); no
+  // column, and no row, are handled.
+  typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> > Real_cholmod;
+  typedef PVF::Sparse_factorization<Real_cholmod, double> Factorization;
+  const Eigen::SparseMatrix<double> A = grid_matrix(40, 1e-2), C = sparse_columns(A.rows(), 12, 3);
+  Factorization factorization;
+  Eigen::MatrixXd G;
+  EXPECT_FALSE(factorization.inverse_congruence(C, G));  // not factored yet
+  ASSERT_TRUE(factorization.analyze(A) && factorization.factorize(A));
+  ASSERT_TRUE(factorization.inverse_congruence(C, G));
+  const Eigen::MatrixXd R = reference_congruence(A, C);
+  EXPECT_LT((G - R).cwiseAbs().maxCoeff(), 1e-10 * R.cwiseAbs().maxCoeff());
+  ASSERT_TRUE(factorization.inverse_congruence(Eigen::SparseMatrix<double>(A.rows(), 0), G));
+  EXPECT_EQ(G.size(), 0);
+  Factorization empty;
+  const Eigen::SparseMatrix<double> none(0, 0);
+  ASSERT_TRUE(empty.analyze(none) && empty.factorize(none));
+  ASSERT_TRUE(empty.inverse_congruence(Eigen::SparseMatrix<double>(0, 5), G));
+  EXPECT_EQ(G, Eigen::MatrixXd::Zero(5, 5));
+}
+
+// The model of Eigen's CHOLMOD solvers on real matrices (the map's and the
+// planarizer's default) keeps OpenBLAS on one thread while its Solver_scope
+// is alive, as Cholmod_sparse_solver's does (a supernodal factor depends on
+// OpenBLAS's thread count in its last bits), and restores the count after.
+TEST(SolverAgreement, RealCholmodScopeRunsOpenBlasOnOneThread)
+{
+#  if defined(__unix__) || defined(__APPLE__)
+  typedef int (*Get_threads)();
+  typedef void (*Set_threads)(int);
+  void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  void* set = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+  if(get == nullptr || set == nullptr)
+    GTEST_SKIP() << "the BLAS is not OpenBLAS";
+  const int original = reinterpret_cast<Get_threads>(get)();
+  reinterpret_cast<Set_threads>(set)(2);
+  if(reinterpret_cast<Get_threads>(get)() != 2)
+    GTEST_SKIP() << "OpenBLAS does not allow 2 threads here";
+  typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> > Real_cholmod;
+  {
+    PVF::Sparse_factorization<Real_cholmod, double>::Solver_scope scope;
+    EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), 1);
+  }
+  EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), 2);
+  reinterpret_cast<Set_threads>(set)(original);
+#  else
+  GTEST_SKIP() << "no dlsym";
+#  endif
+}
 #endif
 
 } // namespace

@@ -134,4 +134,22 @@ public:
   bool solve(const Dense_matrix& B, Dense_matrix& X);
 
   /// @}
+
+  /// \name Optional operation
+  /// A model may have this member; the package finds it at compile time and,
+  /// without it, computes the same matrix with `solve()`.
+  /// @{
+
+  /// computes \f$ G = C^T A^{-1} C \f$ (symmetric, `C.cols()` square) for a
+  /// sparse `C` with as many rows as the matrix of the last `factorize()`; `G`
+  /// is resized. The integer-grid map uses it for the Schur complement of its
+  /// integer unknowns (Section \ref pvf_param), where `C` has a
+  /// few entries per column: a model can then solve with sparse right-hand
+  /// sides instead of dense ones. The model of Eigen's CHOLMOD solvers on
+  /// real matrices has it (forward solves only, over the reach of each column
+  /// in the elimination tree). Real models only (`Scalar = double`). Returns
+  /// `false` on failure.
+  bool inverse_congruence(const Matrix& C, Dense_matrix& G);
+
+  /// @}
 };

@@ -17,13 +17,7 @@
 /// program must then link CHOLMOD itself. When it exists, the macro
 /// `CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE` is defined.
 
-#if defined(CGAL_PVF_HAS_CHOLMOD)
-#  define CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE 1
-#elif defined(__has_include)
-#  if __has_include(<cholmod.h>)
-#    define CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE 1
-#  endif
-#endif
+#include <CGAL/Polyvector_fields/internal/Solvers/cholmod_available.h>
 
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
 

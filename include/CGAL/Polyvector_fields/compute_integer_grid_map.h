@@ -50,7 +50,12 @@ namespace Polyvector_fields {
 /// of `SparseLinearAlgebraWithFactorTraits_d` on `double` (the system is real,
 /// symmetric and positive definite): CHOLMOD through Eigen's
 /// `CholmodDecomposition` when the macro `CGAL_PVF_HAS_CHOLMOD` is defined (as
-/// for `Direct_sparse_solver`), Eigen's `SimplicialLDLT` otherwise.
+/// for `Direct_sparse_solver`), Eigen's `SimplicialLDLT` otherwise. With CHOLMOD,
+/// OpenBLAS runs on one thread while the package factors and solves, as for
+/// `Cholmod_sparse_solver`, so that a map does not depend on the number of
+/// OpenBLAS threads; and the Schur complement of the integer unknowns is made by
+/// sparse forward solves (the operation `inverse_congruence()` of the concept
+/// `SparseFactorization`).
 typedef unspecified_type Default_real_sparse_solver;
 #elif defined(CGAL_PVF_HAS_CHOLMOD)
 typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> >

@@ -26,6 +26,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -50,7 +52,45 @@ public:
   // solves A X = B for a dense block B, all its columns at once
   bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) { return m_factorization.solve(B, X) && X.allFinite(); }
 
+  // G = C^T A^-1 C for a sparse C: the factorization's inverse_congruence()
+  // when its model has one, otherwise (or if it fails: the copy of a factor
+  // that it may make can run out of memory) C^T X with A X = C solved by
+  // blocks of 64 columns (the right-hand sides and solutions of one block
+  // reuse their storage).
+  bool inverse_congruence(const Eigen::SparseMatrix<double>& C, Eigen::MatrixXd& G)
+  {
+    if constexpr(Has_inverse_congruence<Factorization>::value)
+      if(m_factorization.inverse_congruence(C, G) && G.allFinite())
+        return true;
+    const Eigen::Index n = C.rows(), m = C.cols(), block = 64;
+    const Eigen::SparseMatrix<double> CT = C.transpose();
+    G.resize(m, m);
+    Eigen::MatrixXd R, X;
+    for(Eigen::Index j0 = 0; j0 < m; j0 += block)
+    {
+      const Eigen::Index w = (std::min)(block, m - j0);
+      R.setZero(n, w);
+      for(Eigen::Index j = 0; j < w; ++j)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(C, j0 + j); it; ++it)
+          R(it.row(), j) = it.value();
+      if(!solve(R, X))
+        return false;
+      G.middleCols(j0, w).noalias() = CT * X;
+    }
+    G = (0.5 * (G + G.transpose())).eval();  // not in place: G is read transposed
+    return true;
+  }
+
 private:
+  template <typename F, typename = void>
+  struct Has_inverse_congruence : std::false_type
+  {};
+  template <typename F>
+  struct Has_inverse_congruence<F, std::void_t<decltype(std::declval<F&>().inverse_congruence(
+                                     std::declval<const Eigen::SparseMatrix<double>&>(), std::declval<Eigen::MatrixXd&>()))> >
+    : std::true_type
+  {};
+
   typename Factorization::Solver_scope m_scope;
   Factorization m_factorization;
 };
@@ -308,25 +348,15 @@ Error_code Mixed_integer_system<SolverTraits>::round(bool refactor_per_rounding,
   }
 
   // Schur complement of the integer unknowns, S n = g, with
-  // S = Knn - Kxn^T Kxx^-1 Kxn, g = bn - Kxn^T x0: block solves of 64 columns
-  // (the right-hand sides and solutions of one block reuse their storage).
-  const Eigen::SparseMatrix<double> KxnT = Kxn.transpose();
-  Eigen::MatrixXd S = m_Knn;
-  const Eigen::VectorXd g = m_bn - KxnT * x0;
-  const Eigen::Index block = 64;
-  Eigen::MatrixXd R;
-  for(Eigen::Index j0 = 0; j0 < Eigen::Index(m); j0 += block)
-  {
-    const Eigen::Index w = (std::min)(block, Eigen::Index(m) - j0);
-    R.setZero(Eigen::Index(nx), w);
-    for(Eigen::Index j = 0; j < w; ++j)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(Kxn, j0 + j); it; ++it)
-        R(it.row(), j) = it.value();
-    if(!m_system.solve(R, X))
-      return Error_code::SOLVER_FAILURE;
-    S.middleCols(j0, w).noalias() -= KxnT * X;
-  }
-  S = 0.5 * (S + S.transpose());
+  // S = Knn - Kxn^T Kxx^-1 Kxn, g = bn - Kxn^T x0.
+  Eigen::MatrixXd S;
+  if(!m_system.inverse_congruence(Kxn, S))
+    return Error_code::SOLVER_FAILURE;
+  // symmetric to the last bit: Knn's entries (i, j) and (j, i) may differ in
+  // their rounding (set_weights() adds products in either order)
+  S = m_Knn - S;
+  S = (0.5 * (S + S.transpose())).eval();
+  const Eigen::VectorXd g = m_bn - Kxn.transpose() * x0;
   result.time_schur += seconds_since(t);
 
   t = std::chrono::steady_clock::now();

@@ -25,6 +25,7 @@
 // factor.)
 
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/Solvers/Cholmod_inverse_congruence.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -90,14 +91,16 @@ class Sparse_factorization<CGAL::Eigen_solver_traits<EigenSolver>, Scalar>
   // share, and the solver orders them itself.
   static constexpr bool shares_ordering =
     !std::is_void<Twin>::value && std::is_same<Scalar, std::complex<double> >::value;
-  typedef typename std::conditional<shares_ordering, Twin, EigenSolver>::type Solver;
+  // Eigen's CHOLMOD solvers on real matrices are driven through a class that
+  // reads their factor, for inverse_congruence(), with OpenBLAS on one thread.
+  typedef internal::Eigen_cholmod_solver<EigenSolver> Cholmod_traits;
+  typedef typename std::conditional<shares_ordering, Twin, typename Cholmod_traits::Solver>::type Solver;
 
 public:
   typedef Eigen::SparseMatrix<Scalar> Matrix;
   typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense_matrix;
   typedef internal::Shared_ordering Shared_analysis;
-  struct Solver_scope
-  {};
+  typedef typename Cholmod_traits::Solver_scope Solver_scope;
 
   // Each factorization owns its solver; a shared ordering is only read once computed.
   static constexpr bool is_thread_safe = true;
@@ -179,6 +182,22 @@ public:
     else
       X = m_solver->solve(B);
     return m_solver->info() == Eigen::Success;
+  }
+
+  // G = C^T A^-1 C for a sparse C, the optional operation of the concept,
+  // for Eigen's CHOLMOD solvers on real matrices only: sparse forward solves
+  // (Cholmod_inverse_congruence.h).
+  template <bool available = Cholmod_traits::value, std::enable_if_t<available, int> = 0>
+  bool inverse_congruence(const Matrix& C, Dense_matrix& G)
+  {
+    if(!m_factored || C.rows() != m_rows)
+      return false;
+    if(m_rows == 0)
+    {
+      G.setZero(C.cols(), C.cols());
+      return true;
+    }
+    return Cholmod_traits::inverse_congruence(*m_solver, C, G);
   }
 
 private:

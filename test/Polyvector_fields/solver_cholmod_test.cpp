@@ -684,27 +684,17 @@ TEST(SolverAgreement, CholmodInverseCongruenceMatchesFullSolves)
 // OpenBLAS's thread count in its last bits), and restores the count after.
 TEST(SolverAgreement, RealCholmodScopeRunsOpenBlasOnOneThread)
 {
-#  if defined(__unix__) || defined(__APPLE__)
-  typedef int (*Get_threads)();
-  typedef void (*Set_threads)(int);
-  void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
-  void* set = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-  if(get == nullptr || set == nullptr)
-    GTEST_SKIP() << "the BLAS is not OpenBLAS";
-  const int original = reinterpret_cast<Get_threads>(get)();
-  reinterpret_cast<Set_threads>(set)(2);
-  if(reinterpret_cast<Get_threads>(get)() != 2)
-    GTEST_SKIP() << "OpenBLAS does not allow 2 threads here";
+  const pvf_test::Openblas_threads blas;
+  int original = 1;
+  if(!blas.set_two(original))
+    GTEST_SKIP() << "the BLAS is not OpenBLAS, or it does not allow 2 threads here";
   typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> > Real_cholmod;
   {
     PVF::Sparse_factorization<Real_cholmod, double>::Solver_scope scope;
-    EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), 1);
+    EXPECT_EQ(blas.get(), 1);
   }
-  EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), 2);
-  reinterpret_cast<Set_threads>(set)(original);
-#  else
-  GTEST_SKIP() << "no dlsym";
-#  endif
+  EXPECT_EQ(blas.get(), 2);
+  blas.set(original);
 }
 #endif
 

@@ -34,10 +34,6 @@
 #include <thread>
 #include <vector>
 
-#if defined(__unix__) || defined(__APPLE__)
-#  include <dlfcn.h>
-#endif
-
 namespace {
 
 namespace PVF = CGAL::Polyvector_fields;
@@ -204,25 +200,15 @@ TEST(Parallel, FrameFieldsAreBitIdenticalCholmod) { check_frame_fields<PVF::Chol
 // back afterwards.
 TEST(Parallel, OpenBlasThreadCountIsRestored)
 {
-#  if defined(__unix__) || defined(__APPLE__)
-  typedef int (*Get_threads)();
-  typedef void (*Set_threads)(int);
-  void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
-  void* set = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-  if(get == nullptr || set == nullptr)
-    GTEST_SKIP() << "the BLAS is not OpenBLAS";
   // A count other than 1, so that "restored" is not "left at 1".
-  const int original = reinterpret_cast<Get_threads>(get)();
-  reinterpret_cast<Set_threads>(set)(2);
-  if(reinterpret_cast<Get_threads>(get)() != 2)
-    GTEST_SKIP() << "OpenBLAS does not allow 2 threads here";
+  const pvf_test::Openblas_threads blas;
+  int original = 1;
+  if(!blas.set_two(original))
+    GTEST_SKIP() << "the BLAS is not OpenBLAS, or it does not allow 2 threads here";
   const Mesh& tm = bumpy_10k();
   designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Parallel_tag>(tm, 4, true, frame_constraints(tm));
-  EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), 2);
-  reinterpret_cast<Set_threads>(set)(original);
-#  else
-  GTEST_SKIP() << "no dlsym";
-#  endif
+  EXPECT_EQ(blas.get(), 2);
+  blas.set(original);
 }
 
 // Designs running at the same time in two threads of a program: the shared
@@ -235,11 +221,8 @@ TEST(Parallel, ConcurrentCholmodDesignsInTwoThreads)
   const std::vector<Constraint> others = random_constraints(tm, num_faces(tm) / 50, 2, 9);
   const auto alone_a = designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, frames);
   const auto alone_b = designed_coefficients<PVF::Cholmod_sparse_solver, CGAL::Sequential_tag>(tm, 4, true, others);
-#  if defined(__unix__) || defined(__APPLE__)
-  typedef int (*Get_threads)();
-  void* get = dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
-  const int before = get ? reinterpret_cast<Get_threads>(get)() : 0;
-#  endif
+  const pvf_test::Openblas_threads blas;
+  const int before = blas.get ? blas.get() : 0;
   for(int round = 0; round < 3; ++round)
   {
     std::vector<Complex> a, b;
@@ -250,10 +233,8 @@ TEST(Parallel, ConcurrentCholmodDesignsInTwoThreads)
     expect_bit_identical(alone_a, a);
     expect_bit_identical(alone_b, b);
   }
-#  if defined(__unix__) || defined(__APPLE__)
-  if(get)
-    EXPECT_EQ(reinterpret_cast<Get_threads>(get)(), before);
-#  endif
+  if(blas.get)
+    EXPECT_EQ(blas.get(), before);
 }
 #endif
 

@@ -6,8 +6,9 @@
 // It is not part of CGAL.
 
 // Helpers on fields and complex numbers shared by the tests: random complex
-// numbers, the relative difference of two coefficient arrays, and a field
-// designed with a given solver and concurrency tag. (Meshes are in
+// numbers, the relative difference of two coefficient arrays, a field
+// designed with a given solver and concurrency tag, and OpenBLAS's thread
+// count. (Meshes are in
 // test_meshes.h, the helpers of the IO tests in io_test_support.h.)
 
 #ifndef CGAL_POLYVECTOR_FIELDS_TEST_SUPPORT_H
@@ -18,6 +19,10 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <gtest/gtest.h>
+
+#if defined(__unix__) || defined(__APPLE__)
+#  include <dlfcn.h>
+#endif
 
 #include <algorithm>
 #include <complex>
@@ -78,6 +83,34 @@ std::vector<std::complex<double> > designed_coefficients(const TriangleMesh& tm,
     return design(PVF::parameters::sign_symmetric(sign_symmetric, CGAL::parameters::sparse_linear_solver(*solver)));
   return design(PVF::parameters::sign_symmetric(sign_symmetric));
 }
+
+// OpenBLAS's thread count, looked up at run time as the package does: both
+// functions are null when the BLAS is not OpenBLAS (or there is no dlsym).
+struct Openblas_threads
+{
+  typedef int (*Get)();
+  typedef void (*Set)(int);
+  Get get = nullptr;
+  Set set = nullptr;
+
+  Openblas_threads()
+  {
+#if defined(__unix__) || defined(__APPLE__)
+    get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+    set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+#endif
+  }
+  // Sets two threads and gives the count before in `original`; false when
+  // OpenBLAS is not there or does not allow two threads.
+  bool set_two(int& original) const
+  {
+    if(get == nullptr || set == nullptr)
+      return false;
+    original = get();
+    set(2);
+    return get() == 2;
+  }
+};
 
 } // namespace pvf_test
 

@@ -12,7 +12,10 @@
 // relative to the size of the field, on small meshes. The multigrid solver
 // (Amg_sparse_solver) agrees with them to 1e-8 (its documented accuracy), with
 // a coarsest level made small enough that these meshes get several levels, and
-// so does the size-adaptive default (Adaptive_sparse_solver).
+// so does the size-adaptive default (Adaptive_sparse_solver). The real CHOLMOD
+// model's inverse_congruence() (the Schur complement of the integer-grid map)
+// agrees with full solves of SimplicialLDLT, and its Solver_scope keeps
+// OpenBLAS on one thread.
 
 #include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
@@ -23,6 +26,7 @@
 #include <CGAL/Polyvector_fields/design_conjugate_frame_field.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/Coefficient_system.h>
 #include <CGAL/Polyvector_fields/internal/Field_design/constraint_specification.h>
+#include <CGAL/Polyvector_fields/internal/Integer_grid_map/mixed_integer_solve.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -661,6 +665,11 @@ TEST(SolverAgreement, CholmodInverseCongruenceMatchesFullSolves)
   // column, and no row, are handled.
   typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> > Real_cholmod;
   typedef PVF::Sparse_factorization<Real_cholmod, double> Factorization;
+  // the map finds the operation (else it would quietly use block solves)
+  static_assert(PVF::internal::Has_inverse_congruence<Factorization>::value, "the real CHOLMOD model has it");
+  static_assert(!PVF::internal::Has_inverse_congruence<PVF::Sparse_factorization<
+                  CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > >, double> >::value,
+                "Eigen's SimplicialLDLT model has not");
   const Eigen::SparseMatrix<double> A = grid_matrix(40, 1e-2), C = sparse_columns(A.rows(), 12, 3);
   Factorization factorization;
   Eigen::MatrixXd G;

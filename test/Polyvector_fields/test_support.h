@@ -108,7 +108,10 @@ struct Openblas_threads
       return false;
     original = get();
     set(2);
-    return get() == 2;
+    if(get() == 2)
+      return true;
+    set(original);
+    return false;
   }
 };
 

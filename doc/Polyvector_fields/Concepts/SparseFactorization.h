@@ -49,7 +49,8 @@ by the same operations whatever the thread.
 `keeps_matrix` is `true`; otherwise the model may not refer to it after the call.
 An object of type `Solver_scope` is alive while the package factors or solves,
 whether in parallel or not: a model sets a process-wide state there (the
-package's CHOLMOD model runs OpenBLAS on one thread in it).
+package's CHOLMOD models, for `CGAL::Polyvector_fields::Cholmod_sparse_solver` and for
+Eigen's CHOLMOD solvers on real matrices, run OpenBLAS on one thread in it).
 
 <b>Has models:</b>
 - `CGAL::Polyvector_fields::Sparse_factorization<CGAL::Eigen_solver_traits<EigenSolver>, Scalar>`,
@@ -137,10 +138,11 @@ public:
 
   /// \name Optional operation
   /// A model may have this member; the package finds it at compile time and,
-  /// without it, computes the same matrix with `solve()`.
+  /// without it (or when it returns `false`), computes the same matrix with
+  /// `solve()`.
   /// @{
 
-  /// computes \f$ G = C^T A^{-1} C \f$ (symmetric, `C.cols()` square) for a
+  /// computes \f$ G = C^T A^{-1} C \f$ (symmetric, `C.cols()` by `C.cols()`) for a
   /// sparse `C` with as many rows as the matrix of the last `factorize()`; `G`
   /// is resized. The integer-grid map uses it for the Schur complement of its
   /// integer unknowns (Section \ref pvf_param), where `C` has a

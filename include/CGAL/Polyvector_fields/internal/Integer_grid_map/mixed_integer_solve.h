@@ -34,6 +34,17 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
+// Whether a model F of SparseFactorization (Scalar = double) has the optional
+// operation inverse_congruence().
+template <typename F, typename = void>
+struct Has_inverse_congruence : std::false_type
+{};
+template <typename F>
+struct Has_inverse_congruence<F, std::void_t<decltype(std::declval<F&>().inverse_congruence(
+                                   std::declval<const Eigen::SparseMatrix<double>&>(), std::declval<Eigen::MatrixXd&>()))> >
+  : std::true_type
+{};
+
 // A factorization of a real symmetric positive definite matrix through the
 // solver's Sparse_factorization (the model of the SparseFactorization concept),
 // kept alive for several block solves. `A` must outlive it.
@@ -82,15 +93,6 @@ public:
   }
 
 private:
-  template <typename F, typename = void>
-  struct Has_inverse_congruence : std::false_type
-  {};
-  template <typename F>
-  struct Has_inverse_congruence<F, std::void_t<decltype(std::declval<F&>().inverse_congruence(
-                                     std::declval<const Eigen::SparseMatrix<double>&>(), std::declval<Eigen::MatrixXd&>()))> >
-    : std::true_type
-  {};
-
   typename Factorization::Solver_scope m_scope;
   Factorization m_factorization;
 };

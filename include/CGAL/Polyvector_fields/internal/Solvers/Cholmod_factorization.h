@@ -34,6 +34,7 @@
 
 #include <cholmod.h>
 
+#include <cstddef>
 #include <cstring>
 #include <memory>
 

@@ -22,20 +22,21 @@
 // over the whole factor), which is how a generic model computes G.
 //
 // Eigen keeps CHOLMOD's factor in a protected member; a class derived from
-// the Eigen solver reads it. The header also gives Eigen's CHOLMOD solvers the
-// Solver_scope of the package's own CHOLMOD model.
+// the Eigen solver reads it. The header also gives Eigen's CHOLMOD solvers on
+// real matrices the Solver_scope of the package's own CHOLMOD model.
 
-#include <CGAL/Polyvector_fields/internal/Solvers/Single_threaded_blas_scope.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/cholmod_available.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #ifdef CGAL_PVF_CHOLMOD_SOLVER_AVAILABLE
+#  include <CGAL/Polyvector_fields/internal/Solvers/Single_threaded_blas_scope.h>
 #  include <Eigen/CholmodSupport>
 #  include <cholmod.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>

@@ -23,6 +23,11 @@
 // with it and factored by the same solver with the natural ordering, whose own
 // analysis is only the elimination tree. (Cholmod_factorization.h does the same for CHOLMOD with its whole symbolic
 // factor.)
+//
+// Eigen's CHOLMOD solvers on real matrices (the default solver of the map and
+// of the planarizer) get two more things, from Cholmod_inverse_congruence.h:
+// the optional operation inverse_congruence() by sparse forward solves, and
+// the Solver_scope that keeps OpenBLAS on one thread.
 
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
 #include <CGAL/Polyvector_fields/internal/Solvers/Cholmod_inverse_congruence.h>

@@ -9,7 +9,7 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_SOLVERS_SINGLE_THREADED_BLAS_SCOPE_H
 
 // The Solver_scope of the package's CHOLMOD models (Cholmod_sparse_solver, and
-// Eigen's CHOLMOD solvers through CGAL::Eigen_solver_traits).
+// Eigen's CHOLMOD solvers on real matrices through CGAL::Eigen_solver_traits).
 
 #if defined(__unix__) || defined(__APPLE__)
 #  include <dlfcn.h>

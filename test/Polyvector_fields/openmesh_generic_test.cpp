@@ -30,9 +30,22 @@
 #include <CGAL/Polyvector_fields/frame_field_measures.h>
 #include <CGAL/Polyvector_fields/select_curvature_constraints.h>
 #include <CGAL/Polyvector_fields/smoothness_energy.h>
+// the meshing road, included after the BGL headers of Surface_mesh only
+// through test_meshes.h: its templates find OpenMesh's BGL functions by
+// argument-dependent lookup
+#include <CGAL/Polyvector_fields/compute_integer_grid_map.h>
+#include <CGAL/Polyvector_fields/extract_quad_mesh.h>
+#include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
+#include <CGAL/Polyvector_fields/refine_for_quad_size.h>
+#include <CGAL/Polyvector_fields/select_sharp_edge_constraints.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <map>
@@ -113,7 +126,149 @@ std::vector<Complex> flat(const std::map<Key, std::vector<Complex> >& map, const
   return c;
 }
 
+// What the meshing road gives on one mesh type: refinement for the quad size
+// with the sharp edges kept, a field along them, the integer-grid map with
+// them on iso-lines, the quads, and their planarization against the mesh.
+struct Road_outcome
+{
+  std::size_t refined_faces = 0, feature_edges = 0, constraints = 0, integer_unknowns = 0, flipped_faces = 0;
+  std::size_t quads = 0, quad_vertices = 0;
+  std::vector<double> points;       // per vertex, in the order of vertices(tm)
+  std::vector<Complex> field;       // per face, in the order of faces(tm)
+  std::vector<double> uv;           // per corner, in the order of faces(tm) and of each face's halfedges
+  PVF::Error_code planarization = PVF::Error_code::SUCCESS;
+  double planarity_after = -1;
+};
+
+// The points of an OpenMesh in double precision. CGAL's own point map of
+// OpenMesh (CGAL 5.5, properties_OpenMesh.h) writes its points as floats, so
+// the midpoints of the refinement would be rounded to float through it.
+struct Om_double_points
+{
+  typedef Om_vertex key_type;
+  typedef CGAL::Epick::Point_3 value_type;
+  typedef value_type reference;
+  typedef boost::read_write_property_map_tag category;
+  Open_mesh* om;
+  friend value_type get(const Om_double_points& m, key_type v)
+  {
+    const Open_mesh::Point& p = m.om->point(v);
+    return value_type(p[0], p[1], p[2]);
+  }
+  friend void put(const Om_double_points& m, key_type v, const value_type& p)
+  {
+    m.om->set_point(v, Open_mesh::Point(p.x(), p.y(), p.z()));
+  }
+};
+
+// `points` is the point map with which the refinement writes its midpoints.
+template <typename TriangleMesh, typename VertexPointMap>
+Road_outcome meshing_road(TriangleMesh& tm, VertexPointMap points, double h)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor F;
+  typedef typename GT::edge_descriptor E;
+  typedef typename GT::halfedge_descriptor H;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type
+    Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector_3;
+  Road_outcome out;
+  std::map<E, bool> feature_store;
+  auto features = boost::make_assoc_property_map(feature_store);
+  std::vector<PVF::Face_constraint<F, Vector_3> > constraints;
+  EXPECT_EQ(PVF::select_sharp_edge_constraints(tm, 40, 2, constraints, CGAL::parameters::edge_is_constrained_map(features)),
+            PVF::Error_code::SUCCESS);
+  std::vector<std::size_t> origin;
+  EXPECT_EQ(PVF::refine_for_quad_size(tm, h, origin,
+                                      CGAL::parameters::edge_is_constrained_map(features).vertex_point_map(points)),
+            PVF::Error_code::SUCCESS);
+  out.refined_faces = num_faces(tm);
+  for(auto v : vertices(tm))
+    for(int k = 0; k < 3; ++k)
+      out.points.push_back(get(CGAL::vertex_point, tm, v)[k]);
+  constraints.clear();
+  EXPECT_EQ(PVF::select_sharp_edge_constraints(tm, 40, 2, constraints, CGAL::parameters::edge_is_constrained_map(features)),
+            PVF::Error_code::SUCCESS);
+  out.constraints = constraints.size();
+  for(E e : edges(tm))
+    out.feature_edges += get(features, e) ? 1 : 0;
+  std::map<F, std::vector<Complex> > field_store;
+  auto field = boost::make_assoc_property_map(field_store);
+  EXPECT_EQ(PVF::design_polyvector_field(tm, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
+            PVF::Error_code::SUCCESS);
+  for(F f : faces(tm))
+    out.field.insert(out.field.end(), field_store[f].begin(), field_store[f].end());
+  std::map<H, std::array<double, 2> > uv_store;
+  auto uv = boost::make_assoc_property_map(uv_store);
+  PVF::Integer_grid_map_result map;
+  EXPECT_EQ(PVF::compute_integer_grid_map(
+              tm, field, uv, map, PVF::parameters::target_edge_length(h, CGAL::parameters::edge_is_constrained_map(features))),
+            PVF::Error_code::SUCCESS);
+  out.integer_unknowns = map.integer_unknowns;
+  out.flipped_faces = map.flipped_faces;
+  for(F f : faces(tm))
+    for(H g : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+    {
+      out.uv.push_back(uv_store[g][0]);
+      out.uv.push_back(uv_store[g][1]);
+    }
+  Mesh quads;
+  PVF::Quad_extraction_result extraction;
+  EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, quads, extraction), PVF::Error_code::SUCCESS);
+  out.quads = num_faces(quads);
+  out.quad_vertices = num_vertices(quads);
+  PVF::Planarization_result planarization;
+  // a few iterations: the test is about the reference mesh's type, not the target
+  out.planarization = PVF::planarize_quad_mesh(quads, tm, planarization, CGAL::parameters::number_of_iterations(3));
+  out.planarity_after = planarization.max_planarity_after;
+  return out;
+}
+
 } // namespace
+
+// The meshing road is generic too: on fandisk (sharp edges, refined where its
+// triangles are longer than two quads), OpenMesh gives the refined mesh, the
+// map (to the last bit), the quads and their planarization that Surface_mesh
+// gives.
+TEST(OpenMesh, MeshingRoadMatchesSurfaceMesh)
+{
+  Mesh tm = load("fandisk.off");
+  Open_mesh om = to_open_mesh(tm);
+  double length = 0;
+  for(auto e : edges(tm))
+    length += CGAL::Polygon_mesh_processing::edge_length(e, tm);
+  // quads of 0.7 mean edges: the edges longer than 1.4 mean edges are split
+  const double h = 0.7 * length / double(num_edges(tm));
+  const Road_outcome s = meshing_road(tm, get(CGAL::vertex_point, tm), h);
+  const Road_outcome o = meshing_road(om, Om_double_points{ &om }, h);
+  EXPECT_GT(s.refined_faces, 14454u);
+  EXPECT_GT(s.feature_edges, 0u);
+  EXPECT_GT(s.quads, 1000u);
+  EXPECT_EQ(o.refined_faces, s.refined_faces);
+  EXPECT_EQ(o.feature_edges, s.feature_edges);
+  EXPECT_EQ(o.constraints, s.constraints);
+  EXPECT_EQ(o.integer_unknowns, s.integer_unknowns);
+  EXPECT_EQ(o.flipped_faces, s.flipped_faces);
+  ASSERT_EQ(o.points.size(), s.points.size());
+  double worst_point = 0;
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+    worst_point = (std::max)(worst_point, std::abs(o.points[i] - s.points[i]));
+  EXPECT_EQ(worst_point, 0.0);
+  ASSERT_EQ(o.field.size(), s.field.size());
+  double worst_field = 0;
+  for(std::size_t i = 0; i < s.field.size(); ++i)
+    worst_field = (std::max)(worst_field, std::abs(o.field[i] - s.field[i]));
+  EXPECT_LE(worst_field, 1e-12);
+  ASSERT_EQ(o.uv.size(), s.uv.size());
+  double worst = 0;
+  for(std::size_t i = 0; i < s.uv.size(); ++i)
+    worst = (std::max)(worst, std::abs(o.uv[i] - s.uv[i]));
+  EXPECT_EQ(worst, 0.0);
+  EXPECT_EQ(o.quads, s.quads);
+  EXPECT_EQ(o.quad_vertices, s.quad_vertices);
+  EXPECT_EQ(o.planarization, s.planarization);
+  EXPECT_NEAR(o.planarity_after, s.planarity_after, 1e-12);
+}
 
 TEST(OpenMesh, DesignRootsSingularitiesAndEnergy)
 {

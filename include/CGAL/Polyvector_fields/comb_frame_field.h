@@ -324,11 +324,11 @@ Error_code comb_frame_field(const Mesh_or_bundle& mesh_or_bundle, CoefficientMap
   const auto& tm = bundle.mesh();
   for(auto e : edges(tm))
   {
-    const auto h = CGAL::halfedge(e, tm);
+    const auto h = halfedge(e, tm);
     if(!CGAL::is_border_edge(h, tm))
     {
       put(rotation_map, h, comb.rotation(h));
-      put(rotation_map, CGAL::opposite(h, tm), comb.rotation(CGAL::opposite(h, tm)));
+      put(rotation_map, opposite(h, tm), comb.rotation(opposite(h, tm)));
     }
     put(cut_edge_map, e, comb.is_cut(h));
   }

@@ -56,7 +56,15 @@ namespace Polyvector_fields {
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \pvfParamVertexPointMap
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the points of the vertices; the midpoints of the split edges are written
+///                           through it. CGAL's default point map of an OpenMesh writes floats (CGAL 5.5):
+///                           to keep the midpoints in double precision there, give a map that writes
+///                           `OpenMesh::Vec3d`}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map}
 ///     \cgalParamDescription{the feature edges (for example from `select_sharp_edge_constraints()`); updated:
 ///                           the halves of a split feature edge are features, the other new edges are not}

@@ -28,6 +28,35 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
+// The BGL functions that Corner_mesh calls, outside of it: its members have
+// the same names and would hide them. Unqualified, they are found by
+// argument-dependent lookup where the mesh type declares them (in namespace
+// OpenMesh for OpenMesh, for instance), whatever the order of the includes.
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+bgl_halfedge(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& tm)
+{
+  return halfedge(f, tm);
+}
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+bgl_next(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
+{
+  return next(h, tm);
+}
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+bgl_opposite(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
+{
+  return opposite(h, tm);
+}
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::vertex_descriptor
+bgl_target(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
+{
+  return target(h, tm);
+}
+
 // ---------------------------------------------------------------------------
 // The mesh by corners, on a tangent bundle: corner 3f+k is the k-th halfedge of
 // face f (the bundle's face index), starting at halfedge(f). Vertices, frames
@@ -68,18 +97,18 @@ struct Corner_mesh
     vertex_corner.assign(V, npos);
     for(std::size_t f = 0; f < F; ++f)
     {
-      halfedge_descriptor h = CGAL::halfedge(bundle.face(f), tm);
-      for(std::size_t k = 0; k < 3; ++k, h = CGAL::next(h, tm))
+      halfedge_descriptor h = bgl_halfedge(bundle.face(f), tm);
+      for(std::size_t k = 0; k < 3; ++k, h = bgl_next(h, tm))
       {
         halfedge[3 * f + k] = h;
         corner_index.add(h);
-        target[3 * f + k] = bundle.index(CGAL::target(h, tm));
+        target[3 * f + k] = bundle.index(bgl_target(h, tm));
         vertex_corner[target[3 * f + k]] = 3 * f + k;
       }
     }
     for(std::size_t c = 0; c < 3 * F; ++c)
     {
-      const halfedge_descriptor o = CGAL::opposite(halfedge[c], tm);
+      const halfedge_descriptor o = bgl_opposite(halfedge[c], tm);
       if(CGAL::is_border(o, tm))
       {
         border_vertex[target[c]] = 1;

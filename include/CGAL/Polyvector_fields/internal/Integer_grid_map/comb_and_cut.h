@@ -140,7 +140,7 @@ struct Matching_writer
   std::vector<int>* shift;
   friend void put(const Matching_writer& m, const key_type& e, int s)
   {
-    const std::size_t c = m.mesh->corner_index(CGAL::halfedge(e, m.mesh->tm));
+    const std::size_t c = m.mesh->corner_index(halfedge(e, m.mesh->tm));
     (*m.shift)[c] = mod4(s);
     if(m.mesh->opposite[c] != npos)
       (*m.shift)[m.mesh->opposite[c]] = mod4(-s);

@@ -90,7 +90,7 @@ bool feature_corners(const CornerMesh& M, const NamedParameters& np, std::vector
   {
     const auto ecm = get_parameter(np, CGAL::internal_np::edge_is_constrained);
     for(std::size_t c = 0; c < C; ++c)
-      if(get(ecm, CGAL::edge(M.halfedge[c], M.tm)))
+      if(get(ecm, edge(M.halfedge[c], M.tm)))
         any = feature[c] = 1;
   }
   return any;

@@ -28,33 +28,32 @@ namespace CGAL {
 namespace Polyvector_fields {
 namespace internal {
 
-// The BGL functions that Corner_mesh calls, outside of it: its members have
-// the same names and would hide them. Unqualified, they are found by
-// argument-dependent lookup where the mesh type declares them (in namespace
-// OpenMesh for OpenMesh, for instance), whatever the order of the includes.
+// The BGL calls of Corner_mesh, outside of it: its members named halfedge,
+// target, next and opposite would hide the BGL functions. Unqualified, these
+// are found by argument-dependent lookup where the mesh type declares them
+// (in namespace OpenMesh for OpenMesh, for instance), whatever the order of
+// the includes.
+
+// The three halfedges of face f from halfedge(f, tm), and their targets.
+template <typename TriangleMesh>
+void face_corners(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& tm,
+                  std::array<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, 3>& h,
+                  std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3>& v)
+{
+  h[0] = halfedge(f, tm);
+  h[1] = next(h[0], tm);
+  h[2] = next(h[1], tm);
+  for(std::size_t k = 0; k < 3; ++k)
+    v[k] = target(h[k], tm);
+}
+
+// The opposite of h, or the null halfedge if it is a border halfedge.
 template <typename TriangleMesh>
 typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
-bgl_halfedge(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& tm)
+interior_opposite(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
 {
-  return halfedge(f, tm);
-}
-template <typename TriangleMesh>
-typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
-bgl_next(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
-{
-  return next(h, tm);
-}
-template <typename TriangleMesh>
-typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
-bgl_opposite(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
-{
-  return opposite(h, tm);
-}
-template <typename TriangleMesh>
-typename boost::graph_traits<TriangleMesh>::vertex_descriptor
-bgl_target(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)
-{
-  return target(h, tm);
+  const auto o = opposite(h, tm);
+  return CGAL::is_border(o, tm) ? boost::graph_traits<TriangleMesh>::null_halfedge() : o;
 }
 
 // ---------------------------------------------------------------------------
@@ -97,19 +96,21 @@ struct Corner_mesh
     vertex_corner.assign(V, npos);
     for(std::size_t f = 0; f < F; ++f)
     {
-      halfedge_descriptor h = bgl_halfedge(bundle.face(f), tm);
-      for(std::size_t k = 0; k < 3; ++k, h = bgl_next(h, tm))
+      std::array<halfedge_descriptor, 3> h;
+      std::array<vertex_descriptor, 3> v;
+      face_corners(bundle.face(f), tm, h, v);
+      for(std::size_t k = 0; k < 3; ++k)
       {
-        halfedge[3 * f + k] = h;
-        corner_index.add(h);
-        target[3 * f + k] = bundle.index(bgl_target(h, tm));
+        halfedge[3 * f + k] = h[k];
+        corner_index.add(h[k]);
+        target[3 * f + k] = bundle.index(v[k]);
         vertex_corner[target[3 * f + k]] = 3 * f + k;
       }
     }
     for(std::size_t c = 0; c < 3 * F; ++c)
     {
-      const halfedge_descriptor o = bgl_opposite(halfedge[c], tm);
-      if(CGAL::is_border(o, tm))
+      const halfedge_descriptor o = interior_opposite(halfedge[c], tm);
+      if(o == GT::null_halfedge())
       {
         border_vertex[target[c]] = 1;
         border_vertex[source(c)] = 1;

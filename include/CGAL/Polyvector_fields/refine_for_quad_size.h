@@ -58,9 +58,9 @@ namespace Polyvector_fields {
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the points of the vertices; the midpoints of the split edges are written
-///                           through it. CGAL's default point map of an OpenMesh writes floats (CGAL 5.5):
-///                           to keep the midpoints in double precision there, give a map that writes
-///                           `OpenMesh::Vec3d`}
+///                           through it. CGAL 5.5's default point map of an OpenMesh (without
+///                           `CGAL_USE_OM_POINTS`) writes floats: on an OpenMesh whose `Point` is
+///                           `OpenMesh::Vec3d`, give a map that writes doubles to keep the midpoints exact}
 ///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 ///                    as key type and `%Point_3` as value type}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}

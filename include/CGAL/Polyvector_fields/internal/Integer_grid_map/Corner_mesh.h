@@ -98,7 +98,7 @@ struct Corner_mesh
     {
       std::array<halfedge_descriptor, 3> h;
       std::array<vertex_descriptor, 3> v;
-      face_corners(bundle.face(f), tm, h, v);
+      internal::face_corners(bundle.face(f), tm, h, v);
       for(std::size_t k = 0; k < 3; ++k)
       {
         halfedge[3 * f + k] = h[k];
@@ -109,7 +109,7 @@ struct Corner_mesh
     }
     for(std::size_t c = 0; c < 3 * F; ++c)
     {
-      const halfedge_descriptor o = interior_opposite(halfedge[c], tm);
+      const halfedge_descriptor o = internal::interior_opposite(halfedge[c], tm);
       if(o == GT::null_halfedge())
       {
         border_vertex[target[c]] = 1;

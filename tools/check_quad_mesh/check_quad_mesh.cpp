@@ -24,7 +24,9 @@
 // points merged, degenerate and duplicate polygons removed), oriented, made a
 // Surface_mesh and triangulated by PMP::triangulate_faces (a fan where that
 // fails). A non-planar quad of the input has two triangulations that other
-// tools may choose from, so distances are taken to both (its four triangles).
+// tools may choose from, so distances are taken to both (its four triangles),
+// and a quad is folded against the mean (Newell) normal of the input polygon
+// under it, which neither diagonal changes.
 //
 // QUADS is read as a soup too, and its topology (edges, components, Euler
 // characteristic, valences) is computed from the soup itself, so that a
@@ -237,7 +239,10 @@ struct Input_component {
 struct Reference {
   Mesh mesh;                              // triangulated
   std::vector<Triangle> triangles;        // the mesh's triangles, then both splits of each input quad
-  std::vector<Vector> normals;            // unit normal of each triangle
+  // per triangle, the unit normal of the fold test: the mean (Newell) normal of
+  // the input polygon it comes from, so that a quad over a non-planar input
+  // quad is not folded or unfolded by the choice of one of its diagonals
+  std::vector<Vector> normals;
   std::vector<std::size_t> component;     // input component of each triangle
   std::vector<Input_component> components;
   Triangle_tree tree;
@@ -252,6 +257,25 @@ Vector unit_or_zero(const Vector& v)
   const double length = std::sqrt(v.squared_length());
   return length > 0 && std::isfinite(length) ? v / length : Vector(0, 0, 0);
 }
+
+// Twice the vector area of a polygon (Newell's formula): its normal, for a
+// planar polygon the normal of its plane.
+Vector newell_normal(const std::vector<Point>& corners)
+{
+  Vector n(0, 0, 0);
+  for(std::size_t i = 0; i < corners.size(); ++i)
+    n = n + CGAL::cross_product(corners[i] - CGAL::ORIGIN, corners[(i + 1) % corners.size()] - CGAL::ORIGIN);
+  return n;
+}
+
+// A visitor of PMP::triangulate_faces(): the triangles of a polygon keep its normal.
+struct Polygon_normal_keeper {
+  Mesh::Property_map<face_descriptor, Vector>* normal;
+  Vector current{0, 0, 0};
+  void before_subface_creations(face_descriptor f) { current = (*normal)[f]; }
+  void after_subface_created(face_descriptor f) { (*normal)[f] = current; }
+  void after_subface_creations() {}
+};
 
 // Splits every face of more than three sides that PMP could not triangulate
 // into a fan.
@@ -287,10 +311,18 @@ void build_reference(const std::string& path, Reference& ref)
     unreadable("INPUT '" + path + "' cannot be made a polygon mesh: it is not a surface");
   PMP::polygon_soup_to_polygon_mesh(points, polygons, ref.mesh);
 
-  for(face_descriptor f : faces(ref.mesh))
+  // The mean (Newell) normal of each input polygon, kept by the triangles it
+  // is split into: the normal of the fold test (see Reference::normals).
+  auto newell = ref.mesh.add_property_map<face_descriptor, Vector>("f:check_newell", Vector(0, 0, 0)).first;
+  for(face_descriptor f : faces(ref.mesh)) {
     if(CGAL::halfedges_around_face(halfedge(f, ref.mesh), ref.mesh).size() > 3)
       ++ref.polygons_triangulated;
-  if(!PMP::triangulate_faces(ref.mesh))
+    std::vector<Point> corners;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, ref.mesh), ref.mesh))
+      corners.push_back(ref.mesh.point(v));
+    newell[f] = newell_normal(corners);
+  }
+  if(!PMP::triangulate_faces(ref.mesh, CGAL::parameters::visitor(Polygon_normal_keeper{&newell})))
     fan_remaining_polygons(ref.mesh, ref.fan_fallbacks);
 
   // Components and their topology.
@@ -339,7 +371,9 @@ void build_reference(const std::string& path, Reference& ref)
     const halfedge_descriptor h = halfedge(f, ref.mesh);
     const auto va = source(h, ref.mesh), vb = target(h, ref.mesh), vc = target(next(h, ref.mesh), ref.mesh);
     const Triangle t(ref.mesh.point(va), ref.mesh.point(vb), ref.mesh.point(vc));
-    Vector n = unit_or_zero(CGAL::cross_product(t[1] - t[0], t[2] - t[0]));
+    Vector n = unit_or_zero(newell[f]);
+    if(n == Vector(0, 0, 0))  // a face of a fan fallback: its own normal
+      n = unit_or_zero(CGAL::cross_product(t[1] - t[0], t[2] - t[0]));
     if(n == Vector(0, 0, 0))  // a degenerate triangle: the normal of the faces around it
       n = unit_or_zero(face_normal_of_vertex_ring[std::size_t(va)] + face_normal_of_vertex_ring[std::size_t(vb)] +
                        face_normal_of_vertex_ring[std::size_t(vc)]);
@@ -354,6 +388,7 @@ void build_reference(const std::string& path, Reference& ref)
   // Both splits of every input quad, in the component of the mesh triangle
   // nearest to their centroid.
   std::vector<Triangle> extra;
+  std::vector<Vector> extra_normals;  // per input quad
   for(const Polygon& polygon : polygons) {
     if(polygon.size() != 4)
       continue;
@@ -361,6 +396,7 @@ void build_reference(const std::string& path, Reference& ref)
     const Point& p1 = points[polygon[1]];
     const Point& p2 = points[polygon[2]];
     const Point& p3 = points[polygon[3]];
+    extra_normals.push_back(unit_or_zero(newell_normal({ p0, p1, p2, p3 })));
     extra.emplace_back(p0, p1, p2);
     extra.emplace_back(p0, p2, p3);
     extra.emplace_back(p1, p2, p3);
@@ -374,7 +410,7 @@ void build_reference(const std::string& path, Reference& ref)
         const Point centroid = CGAL::centroid(t[0], t[1], t[2]);
         const std::size_t nearest = std::size_t(mesh_tree.closest_point_and_primitive(centroid).second -
                                                 ref.triangles.cbegin());
-        Vector n = unit_or_zero(CGAL::cross_product(t[1] - t[0], t[2] - t[0]));
+        const Vector& n = extra_normals[std::size_t(&t - extra.data()) / 4];
         ref.normals.push_back(n == Vector(0, 0, 0) ? ref.normals[nearest] : n);
         ref.component.push_back(ref.component[nearest]);
       }

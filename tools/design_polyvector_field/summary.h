@@ -143,7 +143,8 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
       std::cout << " (of the field's singularities closer than a quad: " << r.comb.cancelled_singularity_pairs
                 << " opposite pairs cancelled, " << r.comb.merged_singularity_pairs << " pairs merged, "
                 << r.comb.moved_singularities << " moved apart; " << r.comb.split_singularities
-                << " quarter turns split off vertices of valence below 3 or above 6)";
+                << " quarter turns split off vertices of valence below 3 or above 6; the frames of "
+                << r.comb.turned_frames << " faces turned to follow)";
     std::cout << ", " << r.comb.seam_curves << " seam curves ("
               << r.comb.cut_edges << " cut edges), " << r.integer_unknowns << " integer unknowns; " << r.flipped_faces
               << " flipped faces";

@@ -48,6 +48,7 @@ struct Comb_result
   std::size_t merged_singularity_pairs = 0;     ///< close pairs merged into one singular vertex of valence 3 to 6
   std::size_t moved_singularities = 0;          ///< singularities moved away from a close one of the same sign (two +1: one vertex of valence 2 otherwise)
   std::size_t split_singularities = 0;          ///< quarter turns split off a singular vertex whose valence would be below 3 or above 6 (each a new singular vertex)
+  std::size_t turned_frames = 0;               ///< faces whose frames turned to follow the matching that the cancellation, merging or moving of singularities changed
   std::size_t cut_edges = 0;           ///< interior edges of the cut graph (the seams)
   std::size_t boundary_edges = 0;      ///< boundary edges (always in the cut)
   std::size_t seam_curves = 0;         ///< maximal seam paths between nodes of the cut graph

@@ -148,8 +148,9 @@ struct Matching_writer
 };
 
 // Stage 1 of the pipeline: clean, match, cancel, merge or separate the
-// singularities closer than `cancellation_distance` (0: none), comb, cut, prune, trace the seam
-// curves. `report` is a `Comb_result` (see comb_frame_field.h), reset here.
+// singularities closer than `cancellation_distance` (0: none) and turn the
+// frames to the new matching, comb, cut, prune, trace the seam curves.
+// `report` is a `Comb_result` (see comb_frame_field.h), reset here.
 template <typename CornerMesh, typename CoefficientMap, typename Report>
 Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, double min_angle,
                         double cancellation_distance, Comb_data& D, Report& report)
@@ -206,8 +207,11 @@ Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, dou
   for(const auto& s : singularities)
     D.index[bundle.index(s.vertex)] = s.index_numerator;
   bool consistent = true;
+  std::vector<int> turns;
   const Singularity_separation separation =
-    separate_close_singularities(M, cancellation_distance, D.shift, D.index, consistent);
+    separate_close_singularities(M, cancellation_distance, D.shift, D.index, turns, consistent);
+  if(consistent)
+    report.turned_frames = turn_frames_to_matching(M, turns, frame_turning_radius * cancellation_distance, D.roots);
   report.cancelled_singularity_pairs = separation.cancelled;
   report.merged_singularity_pairs = separation.merged;
   report.moved_singularities = separation.separated;

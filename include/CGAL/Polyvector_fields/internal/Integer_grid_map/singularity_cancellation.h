@@ -14,6 +14,10 @@
 // vertices closer than one quad land on the same point, and the faces between
 // them fold over whatever the solver does. A pair of opposite indices closer
 // than the quad size is noise of the field, not a feature of the surface.
+//
+// The frames then turn to follow the new matching (turn_frames_to_matching()):
+// without that, the map is guided by frames that disagree with their matching
+// by a quarter turn across every edge of every path, and shears along them.
 
 #ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H
@@ -21,9 +25,13 @@
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -76,8 +84,10 @@ constexpr double adjacent_pair_factor = 1.4142135623730951;
 // An index moves from v to w by |k| quarter turns on the corners of the shortest
 // edge path through interior vertices; the vertices inside the path keep their
 // index (one quarter turn comes in, the same goes out). `shift` and `index` are
-// updated. Nothing is changed, and `consistent` is set to false, when the holonomy of the
-// matching does not agree with the indices.
+// updated; `turns` receives, per corner, the quarter turns added to its shift
+// (not reduced mod 4; 0 where nothing moved). Nothing is changed, and
+// `consistent` is set to false, when the holonomy of the matching does not
+// agree with the indices.
 struct Singularity_separation
 {
   std::size_t cancelled = 0, merged = 0, separated = 0, split = 0;
@@ -85,11 +95,12 @@ struct Singularity_separation
 
 template <typename CornerMesh>
 Singularity_separation separate_close_singularities(const CornerMesh& M, double distance, std::vector<int>& shift,
-                                                    std::vector<int>& index, bool& consistent)
+                                                    std::vector<int>& index, std::vector<int>& turns, bool& consistent)
 {
   Singularity_separation report;
   consistent = true;
   const std::size_t V = M.V, C = 3 * M.F;
+  turns.assign(C, 0);
   if(!(distance > 0))
     return report;
   std::vector<std::size_t> singular;
@@ -181,6 +192,8 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
       const std::size_t c = via[w];
       shift[c] = mod4(shift[c] - sign * k);
       shift[M.opposite[c]] = mod4(shift[M.opposite[c]] + sign * k);
+      turns[c] -= sign * k;
+      turns[M.opposite[c]] += sign * k;
       w = M.source(c);
     }
     index[to] += k;
@@ -285,6 +298,122 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
       ++report.separated;
   }
   return report;
+}
+
+// How far from the changed edges the frames turn, in separation distances.
+// Measured on the corpus meshes that fold (the flipped faces of the map, then
+// the triangles that its repair left folded, with the CLI's defaults and
+// --curvature-constraints 1), for radii 0 (no turning), 2, 3 and 5:
+// cow.off 112/62, 52/14, 40/3, 37/5; cheburashka.off 24/22, 12/9, 13/7, 24/11;
+// camel_b.obj 62/51, 29/27, 21/5, 16/9; decimated-knight.off 49/34, 9/0,
+// 13/11, 15/6. Solving over the whole component (radius 100) was no better.
+// The faces beside sharp edges turn too, and a feature edge that the field no
+// longer follows is left free by the map (feature_alignment.h): keeping their
+// frames (a_f = 0 there) left 72 flipped faces on cow.off, 62 of them folded
+// after the repair, and keeping the paths of the transfers off the features
+// (fewer cancellations) 177 and 154; on such coarse meshes the edges sharper
+// than 40 degrees are mostly noise.
+constexpr double frame_turning_radius = 3;
+
+// After separate_close_singularities(): the frames turned to follow the new
+// matching. A transfer changes the matching on the edges of its path by whole
+// quarter turns and leaves the frames as they were, so that across each edge
+// of the path the frames of its two faces disagree with their matching by
+// about a quarter turn: the map, guided by the frames, would shear the whole
+// path. Each face f near the path turns its frame by the angle a_f that
+// minimises
+//   sum over interior edges (f, g) of (a_g - a_f + t_fg pi / 2)^2,
+// t_fg the quarter turns that the transfers added to the matching from f to g
+// (`turns`), with a_f = 0 for the faces farther than `radius` along the edges
+// from every changed edge: the mismatch is spread over the faces around the
+// path, as in a smooth field with the new singularities. `roots` (per face,
+// the four roots of its frame) turn by a_f. Returns the number of faces that
+// turned; 0, with the frames as they were, if the solve fails.
+template <typename CornerMesh>
+std::size_t turn_frames_to_matching(const CornerMesh& M, const std::vector<int>& turns, double radius,
+                                    std::vector<std::array<std::complex<double>, 4> >& roots)
+{
+  const std::size_t V = M.V, F = M.F, C = 3 * F;
+  // the vertices within `radius` of a changed edge, by Dijkstra along the edges
+  std::vector<std::vector<std::size_t> > out(V);
+  for(std::size_t c = 0; c < C; ++c)
+    out[M.source(c)].push_back(c);
+  std::vector<double> dist(V, std::numeric_limits<double>::infinity());
+  typedef std::pair<double, std::size_t> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+  for(std::size_t c = 0; c < C; ++c)
+    if(turns[c] != 0)
+      for(std::size_t v : { M.target[c], M.source(c) })
+        if(dist[v] != 0)
+        {
+          dist[v] = 0;
+          queue.push({ 0.0, v });
+        }
+  if(queue.empty())
+    return 0;
+  while(!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if(d > dist[v])
+      continue;
+    for(std::size_t c : out[v])
+    {
+      const std::size_t w = M.target[c];
+      const double dw = d + M.edge_length(c);
+      if(dw < radius && dw < dist[w])
+      {
+        dist[w] = dw;
+        queue.push({ dw, w });
+      }
+    }
+  }
+  // the faces of the region, numbered
+  std::vector<std::size_t> unknown(F, npos), faces;
+  for(std::size_t f = 0; f < F; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+      if(std::isfinite(dist[M.target[3 * f + k]]) && unknown[f] == npos)
+      {
+        unknown[f] = faces.size();
+        faces.push_back(f);
+      }
+  const Eigen::Index n = Eigen::Index(faces.size());
+  std::vector<Eigen::Triplet<double> > entries;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  const double quarter = CGAL_PI / 2;
+  for(std::size_t c = 0; c < C; ++c)
+  {
+    const std::size_t o = M.opposite[c];
+    if(o == npos)
+      continue;
+    const std::size_t i = unknown[CornerMesh::face(c)], j = unknown[CornerMesh::face(o)];
+    if(i == npos)
+      continue;
+    // the row of face(c) for edge(c): a_f - a_g = t pi / 2
+    entries.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.0);
+    if(j != npos)
+      entries.emplace_back(Eigen::Index(i), Eigen::Index(j), -1.0);
+    b[Eigen::Index(i)] += turns[c] * quarter;
+  }
+  // a tiny pull towards 0, so that a region that covers a whole component
+  // (no face outside it to hold it) has one solution
+  for(Eigen::Index i = 0; i < n; ++i)
+    entries.emplace_back(i, i, 1e-9);
+  Eigen::SparseMatrix<double> L(n, n);
+  L.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt(L);
+  if(ldlt.info() != Eigen::Success)
+    return 0;
+  const Eigen::VectorXd a = ldlt.solve(b);
+  if(ldlt.info() != Eigen::Success || !a.allFinite())
+    return 0;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+  {
+    const std::complex<double> turn = std::polar(1.0, a[Eigen::Index(i)]);
+    for(auto& r : roots[faces[i]])
+      r *= turn;
+  }
+  return faces.size();
 }
 
 } // namespace internal

@@ -25,8 +25,8 @@
 // Surface_mesh and triangulated by PMP::triangulate_faces (a fan where that
 // fails). A non-planar quad of the input has two triangulations that other
 // tools may choose from, so distances are taken to both (its four triangles),
-// and a quad is folded against the mean (Newell) normal of the input polygon
-// under it, which neither diagonal changes.
+// and a quad over it is folded against its mean (Newell) normal, which neither
+// diagonal changes.
 //
 // QUADS is read as a soup too, and its topology (edges, components, Euler
 // characteristic, valences) is computed from the soup itself, so that a
@@ -239,9 +239,10 @@ struct Input_component {
 struct Reference {
   Mesh mesh;                              // triangulated
   std::vector<Triangle> triangles;        // the mesh's triangles, then both splits of each input quad
-  // per triangle, the unit normal of the fold test: the mean (Newell) normal of
-  // the input polygon it comes from, so that a quad over a non-planar input
-  // quad is not folded or unfolded by the choice of one of its diagonals
+  // per triangle, the unit normal of the fold test: for the triangles of an
+  // input quad, the quad's mean (Newell) normal, so that a quad over a
+  // non-planar input quad is not folded or unfolded by the choice of one of
+  // its diagonals; for the others, their own
   std::vector<Vector> normals;
   std::vector<std::size_t> component;     // input component of each triangle
   std::vector<Input_component> components;
@@ -258,13 +259,14 @@ Vector unit_or_zero(const Vector& v)
   return length > 0 && std::isfinite(length) ? v / length : Vector(0, 0, 0);
 }
 
-// Twice the vector area of a polygon (Newell's formula): its normal, for a
+// Twice the vector area of a polygon (Newell's formula, from its first corner,
+// which keeps the digits of a polygon far from the origin): its normal, for a
 // planar polygon the normal of its plane.
 Vector newell_normal(const std::vector<Point>& corners)
 {
   Vector n(0, 0, 0);
-  for(std::size_t i = 0; i < corners.size(); ++i)
-    n = n + CGAL::cross_product(corners[i] - CGAL::ORIGIN, corners[(i + 1) % corners.size()] - CGAL::ORIGIN);
+  for(std::size_t i = 1; i + 1 < corners.size(); ++i)
+    n = n + CGAL::cross_product(corners[i] - corners[0], corners[i + 1] - corners[0]);
   return n;
 }
 
@@ -278,8 +280,8 @@ struct Polygon_normal_keeper {
 };
 
 // Splits every face of more than three sides that PMP could not triangulate
-// into a fan.
-void fan_remaining_polygons(Mesh& mesh, std::size_t& fans)
+// into a fan; its triangles keep its `normal`.
+void fan_remaining_polygons(Mesh& mesh, Mesh::Property_map<face_descriptor, Vector>& normal, std::size_t& fans)
 {
   std::vector<face_descriptor> polygons;
   for(face_descriptor f : faces(mesh))
@@ -290,8 +292,11 @@ void fan_remaining_polygons(Mesh& mesh, std::size_t& fans)
     // split_face(h, next(next(h))) cuts the triangle of next(h) and
     // next(next(h)) off the face; h keeps the rest.
     const halfedge_descriptor h = halfedge(f, mesh);
-    while(CGAL::halfedges_around_face(h, mesh).size() > 3)
-      CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh);
+    while(CGAL::halfedges_around_face(h, mesh).size() > 3) {
+      const halfedge_descriptor cut = CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh);
+      normal[face(opposite(cut, mesh), mesh)] = normal[f];
+      normal[face(cut, mesh)] = normal[f];
+    }
   }
 }
 
@@ -311,19 +316,23 @@ void build_reference(const std::string& path, Reference& ref)
     unreadable("INPUT '" + path + "' cannot be made a polygon mesh: it is not a surface");
   PMP::polygon_soup_to_polygon_mesh(points, polygons, ref.mesh);
 
-  // The mean (Newell) normal of each input polygon, kept by the triangles it
-  // is split into: the normal of the fold test (see Reference::normals).
+  // The mean (Newell) normal of each input quad, kept by the triangles it is
+  // split into: the normal of the fold test (see Reference::normals). Zero for
+  // the other faces, whose triangles use their own normals.
   auto newell = ref.mesh.add_property_map<face_descriptor, Vector>("f:check_newell", Vector(0, 0, 0)).first;
   for(face_descriptor f : faces(ref.mesh)) {
-    if(CGAL::halfedges_around_face(halfedge(f, ref.mesh), ref.mesh).size() > 3)
+    const std::size_t sides = CGAL::halfedges_around_face(halfedge(f, ref.mesh), ref.mesh).size();
+    if(sides > 3)
       ++ref.polygons_triangulated;
+    if(sides != 4)
+      continue;
     std::vector<Point> corners;
     for(auto v : CGAL::vertices_around_face(halfedge(f, ref.mesh), ref.mesh))
       corners.push_back(ref.mesh.point(v));
     newell[f] = newell_normal(corners);
   }
   if(!PMP::triangulate_faces(ref.mesh, CGAL::parameters::visitor(Polygon_normal_keeper{&newell})))
-    fan_remaining_polygons(ref.mesh, ref.fan_fallbacks);
+    fan_remaining_polygons(ref.mesh, newell, ref.fan_fallbacks);
 
   // Components and their topology.
   auto fcc = ref.mesh.add_property_map<face_descriptor, std::size_t>("f:check_component", 0).first;
@@ -372,7 +381,7 @@ void build_reference(const std::string& path, Reference& ref)
     const auto va = source(h, ref.mesh), vb = target(h, ref.mesh), vc = target(next(h, ref.mesh), ref.mesh);
     const Triangle t(ref.mesh.point(va), ref.mesh.point(vb), ref.mesh.point(vc));
     Vector n = unit_or_zero(newell[f]);
-    if(n == Vector(0, 0, 0))  // a face of a fan fallback: its own normal
+    if(n == Vector(0, 0, 0))  // not from an input quad: its own normal
       n = unit_or_zero(CGAL::cross_product(t[1] - t[0], t[2] - t[0]));
     if(n == Vector(0, 0, 0))  // a degenerate triangle: the normal of the faces around it
       n = unit_or_zero(face_normal_of_vertex_ring[std::size_t(va)] + face_normal_of_vertex_ring[std::size_t(vb)] +

@@ -48,7 +48,7 @@ struct Comb_result
   std::size_t merged_singularity_pairs = 0;     ///< close pairs merged into one singular vertex of valence 3 to 6
   std::size_t moved_singularities = 0;          ///< singularities moved away from a close one of the same sign (two +1: one vertex of valence 2 otherwise)
   std::size_t split_singularities = 0;          ///< quarter turns split off a singular vertex whose valence would be below 3 or above 6 (each a new singular vertex)
-  std::size_t turned_frames = 0;               ///< faces whose frames turned to follow the matching that the cancellation, merging or moving of singularities changed
+  std::size_t turned_frames = 0;               ///< faces whose frames turned to follow the matching that the cancellation, merging or moving of singularities changed (those within three times `singularity_cancellation_distance` of a changed edge)
   std::size_t cut_edges = 0;           ///< interior edges of the cut graph (the seams)
   std::size_t boundary_edges = 0;      ///< boundary edges (always in the cut)
   std::size_t seam_curves = 0;         ///< maximal seam paths between nodes of the cut graph
@@ -274,8 +274,13 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///                           turns of the matching along the shortest edge path, as with the period
 ///                           jumps of mixed-integer quadrangulation. The map places every singular
 ///                           vertex on an integer point: two closer than one quad would meet there,
-///                           and the faces between them would fold over. `Comb_result` counts the
-///                           pairs; its `singular_vertices` are those that remain. Given with
+///                           and the faces between them would fold over. The frames within three times
+///                           this distance of a changed edge then turn to follow the new matching (the
+///                           quarter turn of each edge spread over the faces around it, see the
+///                           manual's section on close singularities): the combed frames are those
+///                           turned frames, and near a changed edge their own principal matching and
+///                           singularities may differ from the comb's. `Comb_result` counts the
+///                           pairs and the turned frames; its `singular_vertices` are those that remain. Given with
 ///                           `Polyvector_fields::parameters::singularity_cancellation_distance()`}
 ///     \cgalParamType{`double >= 0`, in mesh units; the quad size is the natural choice}
 ///     \cgalParamDefault{0: every singularity of the field is kept}

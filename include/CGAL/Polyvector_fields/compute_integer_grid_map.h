@@ -372,7 +372,8 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{singularity_cancellation_distance}
 ///     \cgalParamDescription{singular vertices closer than this are cancelled, merged or moved apart
-///                           before the map is solved; see `comb_frame_field()`}
+///                           before the map is solved, and the frames near the matching this changes
+///                           turn to follow it; see `comb_frame_field()`}
 ///     \cgalParamType{`double >= 0`, in mesh units}
 ///     \cgalParamDefault{0: every singularity of the field is kept}
 ///   \cgalParamNEnd

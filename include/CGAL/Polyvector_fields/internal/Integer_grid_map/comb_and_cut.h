@@ -54,9 +54,11 @@ struct Seam_curve
 struct Comb_data
 {
   std::vector<std::array<std::complex<double>, 4> > roots;  // per face: cleaned unit roots, counterclockwise
+                                                            // (turned to the matching near a separation)
   std::vector<std::vector<std::complex<double> > > clean;   // per face: their coefficients
   std::vector<int> offset;        // per face: the combed u is roots[offset], v is roots[offset + 1]
-  std::vector<int> shift;         // per corner: principal matching, root i of face(c) ~ root i + shift of face(opposite)
+  std::vector<int> shift;         // per corner: principal matching (changed by the separation of singularities),
+                                  // root i of face(c) ~ root i + shift of face(opposite)
   std::vector<int> rotation;      // per corner: combed matching r, u of face(c) ~ R^r-th combed root of face(opposite)
   std::vector<char> tree;         // per corner: the dual spanning tree crosses edge(c)
   std::vector<char> seam;         // per corner: edge(c) is an interior cut edge
@@ -211,7 +213,8 @@ Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, dou
   const Singularity_separation separation =
     separate_close_singularities(M, cancellation_distance, D.shift, D.index, turns, consistent);
   if(consistent)
-    report.turned_frames = turn_frames_to_matching(M, turns, frame_turning_radius * cancellation_distance, D.roots);
+    report.turned_frames =
+      turn_frames_to_matching(M, turns, frame_turning_radius * cancellation_distance, D.roots, D.clean);
   report.cancelled_singularity_pairs = separation.cancelled;
   report.merged_singularity_pairs = separation.merged;
   report.moved_singularities = separation.separated;

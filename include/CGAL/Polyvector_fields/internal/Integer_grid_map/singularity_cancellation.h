@@ -327,11 +327,14 @@ constexpr double frame_turning_radius = 3;
 // (`turns`), with a_f = 0 for the faces farther than `radius` along the edges
 // from every changed edge: the mismatch is spread over the faces around the
 // path, as in a smooth field with the new singularities. `roots` (per face,
-// the four roots of its frame) turn by a_f. Returns the number of faces that
-// turned; 0, with the frames as they were, if the solve fails.
+// the four roots of its frame) turn by a_f, and `coefficients` (per face, the
+// coefficients c_0, c_1, c_2, c_3 of its polynomial, of degree 4 in z) with
+// them: c_k by 4 - k times a_f. Returns the number of faces within the radius;
+// 0, with the frames as they were, if the solve fails.
 template <typename CornerMesh>
 std::size_t turn_frames_to_matching(const CornerMesh& M, const std::vector<int>& turns, double radius,
-                                    std::vector<std::array<std::complex<double>, 4> >& roots)
+                                    std::vector<std::array<std::complex<double>, 4> >& roots,
+                                    std::vector<std::vector<std::complex<double> > >& coefficients)
 {
   const std::size_t V = M.V, F = M.F, C = 3 * F;
   // the vertices within `radius` of a changed edge, by Dijkstra along the edges
@@ -412,6 +415,9 @@ std::size_t turn_frames_to_matching(const CornerMesh& M, const std::vector<int>&
     const std::complex<double> turn = std::polar(1.0, a[Eigen::Index(i)]);
     for(auto& r : roots[faces[i]])
       r *= turn;
+    std::vector<std::complex<double> >& c = coefficients[faces[i]];
+    for(std::size_t k = 0; k < c.size(); ++k)
+      c[k] *= std::pow(turn, int(c.size() - k));
   }
   return faces.size();
 }

@@ -1039,6 +1039,83 @@ TEST_F(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
             PVF::Error_code::INVALID_PARAMETER);
 }
 
+// Singularities closer than half the separation distance to the border give
+// their index to the border (a flat square with fields of 30 random
+// constraints, distance 4 edges): none is left within that distance of a
+// border vertex that could take it (on a straight border, every one but the
+// four corners), the border vertices have index 0, and the map of the comb is
+// seamless.
+TEST(IgmBorderSingularities, CloseToTheBorderMoveOntoIt)
+{
+  const Mesh tm = grid(24, 24);
+  const double d = 4;  // edges of the grid have length 1 or sqrt(2)
+  // the distance along edges from each vertex to the nearest border vertex that is not a corner of the square
+  std::map<Vertex, double> to_border;
+  std::vector<std::pair<double, Vertex> > queue;
+  auto corner = [&](Vertex v) {
+    const Point& p = tm.point(v);
+    return (p.x() == 0 || p.x() == 24) && (p.y() == 0 || p.y() == 24);
+  };
+  for(Vertex v : vertices(tm))
+    if(CGAL::is_border(v, tm) && !corner(v))
+      queue.emplace_back(0.0, v);
+  std::make_heap(queue.begin(), queue.end(), std::greater<>());
+  while(!queue.empty())
+  {
+    std::pop_heap(queue.begin(), queue.end(), std::greater<>());
+    const auto [dv, v] = queue.back();
+    queue.pop_back();
+    if(to_border.count(v))
+      continue;
+    to_border[v] = dv;
+    for(auto h : halfedges_around_target(halfedge(v, tm), tm))
+      if(!to_border.count(source(h, tm)))
+      {
+        queue.emplace_back(dv + std::sqrt(CGAL::squared_distance(tm.point(v), tm.point(source(h, tm)))), source(h, tm));
+        std::push_heap(queue.begin(), queue.end(), std::greater<>());
+      }
+  }
+  std::size_t moved = 0;
+  for(unsigned seed : { 5u, 6u, 7u, 8u })
+  {
+    Mesh mesh = tm;
+    auto field = mesh.add_property_map<Face, std::vector<Complex> >("f:field").first;
+    ASSERT_EQ(PVF::design_polyvector_field(mesh, 4, random_constraints(mesh, 30, 2, seed), field,
+                                           PVF::parameters::sign_symmetric(true)),
+              PVF::Error_code::SUCCESS);
+    typedef PVF::Tangent_bundle<Mesh> Bundle;
+    const Bundle bundle(mesh);
+    PVF::Frame_field_comb<Bundle> kept, separated;
+    ASSERT_EQ(PVF::comb_frame_field(bundle, field, kept), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(PVF::comb_frame_field(bundle, field, separated, PVF::parameters::singularity_cancellation_distance(d)),
+              PVF::Error_code::SUCCESS);
+    const PVF::Comb_result& r = separated.report();
+    moved += r.singularities_moved_to_border;
+    std::size_t near = 0, near_before = 0;
+    for(Vertex v : vertices(mesh))
+    {
+      if(CGAL::is_border(v, mesh))
+      {
+        EXPECT_EQ(separated.index_numerator(v), 0) << seed;
+        continue;
+      }
+      near_before += kept.index_numerator(v) != 0 && to_border[v] < d / 2;
+      near += separated.index_numerator(v) != 0 && to_border[v] < d / 2;
+    }
+    EXPECT_EQ(near, 0u) << seed;
+    EXPECT_GE(near_before, r.singularities_moved_to_border) << seed;
+    auto uv = mesh.add_property_map<Halfedge, UV>("h:uv").first;
+    PVF::Integer_grid_map_result map;
+    ASSERT_EQ(PVF::compute_integer_grid_map(separated, uv, map, PVF::parameters::target_edge_length(d)),
+              PVF::Error_code::SUCCESS);
+    EXPECT_EQ(map.inconsistencies, 0u);
+    EXPECT_EQ(worst_seam_mismatch(mesh, uv), 0.0);
+    std::printf("[ flat square, 30 random constraints, seed %u ] %zu singularities near the border, %zu moved onto "
+                "it; %zu flipped faces\n", seed, near_before, r.singularities_moved_to_border, map.flipped_faces);
+  }
+  ASSERT_GT(moved, 0u) << "the cases must exercise the move onto the border";
+}
+
 // Two singular vertices joined by one edge a little longer than the separation
 // distance (a coarse mesh: no path between them is shorter than that edge)
 // may round to the same integer point, and fold every face between them: the

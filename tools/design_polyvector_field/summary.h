@@ -139,10 +139,11 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     std::cout << "parametrization edge length " << r.target_edge_length << " (mean edge " << r.mean_edge_length << "); "
               << r.comb.singular_vertices << " singular vertices on integer points";
     if(r.comb.cancelled_singularity_pairs + r.comb.merged_singularity_pairs + r.comb.moved_singularities +
-         r.comb.split_singularities > 0)
+         r.comb.split_singularities + r.comb.singularities_moved_to_border > 0)
       std::cout << " (of the field's singularities closer than a quad: " << r.comb.cancelled_singularity_pairs
                 << " opposite pairs cancelled, " << r.comb.merged_singularity_pairs << " pairs merged, "
-                << r.comb.moved_singularities << " moved apart; " << r.comb.split_singularities
+                << r.comb.moved_singularities << " moved apart, " << r.comb.singularities_moved_to_border
+                << " moved onto the border; " << r.comb.split_singularities
                 << " quarter turns split off vertices of valence below 3 or above 6; the frames of "
                 << r.comb.turned_frames << " faces turned to follow)";
     std::cout << ", " << r.comb.seam_curves << " seam curves ("

@@ -48,7 +48,8 @@ struct Comb_result
   std::size_t merged_singularity_pairs = 0;     ///< close pairs merged into one singular vertex of valence 3 to 6
   std::size_t moved_singularities = 0;          ///< singularities moved away from a close one of the same sign (two +1: one vertex of valence 2 otherwise)
   std::size_t split_singularities = 0;          ///< quarter turns split off a singular vertex whose valence would be below 3 or above 6 (each a new singular vertex)
-  std::size_t turned_frames = 0;               ///< faces whose frames turned to follow the matching that the cancellation, merging or moving of singularities changed (those within three times `singularity_cancellation_distance` of a changed edge)
+  std::size_t singularities_moved_to_border = 0; ///< singularities closer than half `singularity_cancellation_distance` to the border, whose index moved onto a border vertex (where it is gone: the border turns freely)
+  std::size_t turned_frames = 0;               ///< faces whose frames turned to follow the matching that the cancellation, merging or moving of singularities (onto the border too) changed (those within three times `singularity_cancellation_distance` of a changed edge)
   std::size_t cut_edges = 0;           ///< interior edges of the cut graph (the seams)
   std::size_t boundary_edges = 0;      ///< boundary edges (always in the cut)
   std::size_t seam_curves = 0;         ///< maximal seam paths between nodes of the cut graph
@@ -270,7 +271,10 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///                           merged index makes a quad vertex of valence 3 to 6 merges, any other
 ///                           pair (two of index 1/4) is moved apart. Before that, a singular vertex
 ///                           of index above 1/4 or below -1/2 (a quad vertex of valence below 3 or
-///                           above 6) is split into several, a quarter turn at a time. The index moves by whole quarter
+///                           above 6) is split into several, a quarter turn at a time; then a singular vertex
+///                           closer than half this distance to the border gives its index to the
+///                           closest border vertex whose angle can take it (the border turns freely
+///                           there, and the singularity is gone). The index moves by whole quarter
 ///                           turns of the matching along the shortest edge path, as with the period
 ///                           jumps of mixed-integer quadrangulation. The map places every singular
 ///                           vertex on an integer point: two closer than one quad would meet there,
@@ -280,7 +284,9 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///                           manual's section on close singularities): the combed frames are those
 ///                           turned frames, and near a changed edge their own principal matching and
 ///                           singularities may differ from the comb's. `Comb_result` counts the
-///                           pairs and the turned frames; its `singular_vertices` are those that remain. Given with
+///                           pairs, the singularities given to the border and the turned frames;
+///                           its `singular_vertices` are those that remain. The sum of the interior
+///                           indices is kept, but for the indices given to the border. Given with
 ///                           `Polyvector_fields::parameters::singularity_cancellation_distance()`}
 ///     \cgalParamType{`double >= 0`, in mesh units; the quad size is the natural choice}
 ///     \cgalParamDefault{0: every singularity of the field is kept}

@@ -219,6 +219,7 @@ Error_code comb_and_cut(const CornerMesh& M, CoefficientMap coefficient_map, dou
   report.merged_singularity_pairs = separation.merged;
   report.moved_singularities = separation.separated;
   report.split_singularities = separation.split;
+  report.singularities_moved_to_border = separation.to_border;
   D.matching_inconsistent = !consistent;
   report.singular_vertices = 0;
   for(std::size_t v = 0; v < V; ++v)

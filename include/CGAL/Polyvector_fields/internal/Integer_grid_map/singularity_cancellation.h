@@ -22,6 +22,7 @@
 #ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_INTEGER_GRID_MAP_SINGULARITY_CANCELLATION_H
 
+#include <CGAL/Polyvector_fields/internal/Field_design/singularity_indices.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/gaussian_integers.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
@@ -90,7 +91,7 @@ constexpr double adjacent_pair_factor = 1.4142135623730951;
 // agree with the indices.
 struct Singularity_separation
 {
-  std::size_t cancelled = 0, merged = 0, separated = 0, split = 0;
+  std::size_t cancelled = 0, merged = 0, separated = 0, split = 0, to_border = 0;
 };
 
 template <typename CornerMesh>
@@ -107,7 +108,7 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
   for(std::size_t v = 0; v < V; ++v)
     if(index[v] != 0 && !M.border_vertex[v])
       singular.push_back(v);
-  if(singular.size() < 2)
+  if(singular.empty())
     return report;
 
   // The sign that relates the holonomy to the index numerator: holonomy = sign * k (mod 4).
@@ -140,7 +141,8 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
   std::vector<double> dist(V, -1);
   std::vector<std::size_t> via(V, npos), touched;
   typedef std::pair<double, std::size_t> Item;
-  auto search = [&](const std::vector<std::size_t>& sources, double radius, auto&& visit) {
+  // With to_border, border vertices are reached (visited) but not passed through.
+  auto search = [&](const std::vector<std::size_t>& sources, double radius, auto&& visit, bool to_border = false) {
     std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
     for(std::size_t s : sources)
     {
@@ -162,7 +164,7 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
       {
         const std::size_t w = M.target[c];
         const double dw = d + M.edge_length(c);
-        if(dw >= radius || M.border_vertex[w])
+        if(dw >= radius || (M.border_vertex[w] && !to_border))
           continue;
         if(dist[w] < 0 || dw < dist[w])
         {
@@ -243,6 +245,42 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
         break;
       ++report.split;
     }
+  }
+
+  // Singular vertices closer than half `distance` to the border: the border
+  // turns freely, so their index moves onto the closest border vertex that can
+  // take it and is gone (a border vertex has no holonomy). Kept, such a vertex
+  // would be put on an integer point less than half a quad from the border,
+  // and the faces between them fold over when the border is on an iso-line,
+  // or squeeze when it is free. Index k turns the border by k quarter turns at
+  // the vertex that takes it: its angle theta (the sum of its corner angles
+  // on the surface) becomes about theta - k pi/2 in the map, which must stay
+  // within [pi/4, 7 pi/4], or the border would fold back or overlap itself.
+  std::vector<double> border_angle(V, 0);
+  for(std::size_t c = 0; c < C; ++c)
+    if(M.border_vertex[M.target[c]])
+      border_angle[M.target[c]] += corner_angle(M.bundle, M.halfedge[c]);
+  for(std::size_t v : singular)
+  {
+    if(index[v] == 0)
+      continue;
+    std::size_t target = npos;
+    search({ v }, 0.5 * distance, [&](std::size_t w, double) {
+      if(!M.border_vertex[w])
+        return false;
+      const double turned = border_angle[w] - double(index[v]) * CGAL_PI / 2;
+      if(!(turned >= CGAL_PI / 4 && turned <= 7 * CGAL_PI / 4))
+        return false;
+      target = w;
+      return true;
+    }, true);
+    if(target != npos)
+    {
+      transfer(v, target, index[v]);
+      index[target] = 0;
+      ++report.to_border;
+    }
+    reset();
   }
 
   // Close pairs.

@@ -39,8 +39,9 @@ namespace qex {
 // are unfolded into one chart through the exact transitions, their inner vertices
 // are placed by Tutte's barycentric embedding with the ring boundary fixed, and the
 // values are snapped to a dyadic grid and mapped back into each face's chart by the
-// same exact transitions. A region is kept only if all its faces come out positive
-// and none of its vertices is wound (wound_vertex()).
+// same exact transitions. A region is repaired when all its faces come out positive
+// and none of its vertices is wound (wound_vertex()); a re-embedding with fewer such
+// faces and vertices than before is kept too, as the start of the next, larger region.
 // ---------------------------------------------------------------------------
 struct Fold_over_result
 {
@@ -310,6 +311,18 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
       for(std::size_t k = 0; k < 3; ++k)
         M.uv[3 * f + k] = saved[i++];
   };
+  // the faces of the region that are not positive, and its wound vertices
+  auto folds = [&]() {
+    std::size_t count = 0;
+    for(std::size_t f : region)
+    {
+      count += M.face_orientation(f) <= 0;
+      for(std::size_t k = 0; k < 3; ++k)
+        count += wound_vertex(M, M.vertex[3 * f + k]);  // (counted in each of its faces)
+    }
+    return count;
+  };
+  const std::size_t folds_before = folds();
   // every face positive and no wound vertex left: a re-embedding that leaves the
   // branch point of a region with no reversed face as it was is no repair
   auto unfolded = [&]() {
@@ -473,7 +486,9 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
 #endif
   if(!ok)
   {
-    restore();
+    // fewer folds is progress that the next, larger region starts from
+    if(!(folds() < folds_before))
+      restore();
     return false;
   }
   ++report.regions;
@@ -552,6 +567,20 @@ inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_o
   }
   folded = folded_faces(M);
   report.remaining = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
+#ifdef CGAL_PVF_QEX_DEBUG
+  for(std::size_t f = 0; f < M.F; ++f)
+    if(folded[f])
+    {
+      std::cerr << "left: face " << f << " orientation " << M.face_orientation(f);
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const std::size_t v = M.vertex[3 * f + k];
+        std::cerr << " | v" << v << (M.border_vertex[v] ? " border" : trivial_holonomy(M, v) ? "" : " cone")
+                  << (wound_vertex(M, v) ? " wound" : "") << " (" << M.uv[3 * f + k][0] << "," << M.uv[3 * f + k][1] << ")";
+      }
+      std::cerr << "\n";
+    }
+#endif
   if(report.remaining != 0)
     return Error_code::UNREPAIRABLE_FOLD_OVER;
   return Error_code::SUCCESS;

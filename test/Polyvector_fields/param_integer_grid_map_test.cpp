@@ -1042,9 +1042,9 @@ TEST_F(IgmSingularities, CloseOnesAreCancelledMergedOrMovedApart)
 // Singularities closer than half the separation distance to the border give
 // their index to the border (a flat square with fields of 30 random
 // constraints, distance 4 edges): none is left within that distance of a
-// border vertex that could take it (on a straight border, every one but the
-// four corners), the border vertices have index 0, and the map of the comb is
-// seamless.
+// border vertex that could take it (on a straight border, for an index of
+// +-1/4, every one but the four corners), the border vertices have index 0,
+// and the map of the comb is seamless.
 TEST(IgmBorderSingularities, CloseToTheBorderMoveOntoIt)
 {
   const Mesh tm = grid(24, 24);

@@ -272,9 +272,10 @@ Error_code comb_frame_field(const Tangent_bundle<TriangleMesh, VertexPointMap>& 
 ///                           pair (two of index 1/4) is moved apart. Before that, a singular vertex
 ///                           of index above 1/4 or below -1/2 (a quad vertex of valence below 3 or
 ///                           above 6) is split into several, a quarter turn at a time; then a singular vertex
-///                           closer than half this distance to the border gives its index to the
-///                           closest border vertex whose angle can take it (the border turns freely
-///                           there, and the singularity is gone). The index moves by whole quarter
+///                           closer than half this distance to the border (along interior edges) gives its
+///                           index to the closest border vertex within that distance whose angle can
+///                           take it (the border turns freely there, and the singularity is gone;
+///                           again after the pairs, for those moved apart). The index moves by whole quarter
 ///                           turns of the matching along the shortest edge path, as with the period
 ///                           jumps of mixed-integer quadrangulation. The map places every singular
 ///                           vertex on an integer point: two closer than one quad would meet there,

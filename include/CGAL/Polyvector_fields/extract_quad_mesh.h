@@ -128,9 +128,9 @@ struct Quad_extraction_result
 /// that does not turn `2 pi` (for example `4 pi`: the map covers the plane
 /// twice there), or on the border with a star that turns `2 pi` or more.
 /// Each region is tried on one ring, then two, up to `fold_over_repair_rings`;
-/// a re-embedding that leaves a region with fewer folded triangles and wound
-/// vertices than before is kept even when some remain, and the next, larger
-/// region starts from it. Reported in `result`; what the repair cannot unfold
+/// when no re-embedding of a region unfolds it, the one that leaves the fewest
+/// folded triangles (those of `det <= 0` and around wound vertices) is kept if
+/// that is fewer than before, and the next, larger region starts from it. Reported in `result`; what the repair cannot unfold
 /// makes the call fail with `UNREPAIRABLE_FOLD_OVER`.
 ///
 /// <b>Folded quads.</b> Every quad is checked against the input surface under it: it is

@@ -108,7 +108,7 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
   for(std::size_t v = 0; v < V; ++v)
     if(index[v] != 0 && !M.border_vertex[v])
       singular.push_back(v);
-  if(singular.empty())
+  if(singular.size() < 2)
     return report;
 
   // The sign that relates the holonomy to the index numerator: holonomy = sign * k (mod 4).
@@ -247,9 +247,10 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
     }
   }
 
-  // Singular vertices closer than half `distance` to the border: the border
-  // turns freely, so their index moves onto the closest border vertex that can
-  // take it and is gone (a border vertex has no holonomy). Kept, such a vertex
+  // Singular vertices closer than half `distance` to the border (along interior
+  // edges), before the pairs and again after them: the border turns freely, so
+  // their index moves onto the closest border vertex within that distance that
+  // can take it, and is gone (a border vertex has no holonomy). Kept, such a vertex
   // would be put on an integer point less than half a quad from the border,
   // and the faces between them fold over when the border is on an iso-line,
   // or squeeze when it is free. Index k turns the border by k quarter turns at
@@ -260,28 +261,33 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
   for(std::size_t c = 0; c < C; ++c)
     if(M.border_vertex[M.target[c]])
       border_angle[M.target[c]] += corner_angle(M.bundle, M.halfedge[c]);
-  for(std::size_t v : singular)
-  {
-    if(index[v] == 0)
-      continue;
-    std::size_t target = npos;
-    search({ v }, 0.5 * distance, [&](std::size_t w, double) {
-      if(!M.border_vertex[w])
-        return false;
-      const double turned = border_angle[w] - double(index[v]) * CGAL_PI / 2;
-      if(!(turned >= CGAL_PI / 4 && turned <= 7 * CGAL_PI / 4))
-        return false;
-      target = w;
-      return true;
-    }, true);
-    if(target != npos)
+  auto give_to_border = [&]() {
+    for(std::size_t i = 0; i < singular.size(); ++i)
     {
-      transfer(v, target, index[v]);
-      index[target] = 0;
-      ++report.to_border;
+      const std::size_t v = singular[i];
+      if(index[v] == 0)
+        continue;
+      std::size_t target = npos;
+      search({ v }, 0.5 * distance, [&](std::size_t w, double) {
+        if(!M.border_vertex[w])
+          return false;
+        const double turned = border_angle[w] - double(index[v]) * CGAL_PI / 2;
+        if(!(turned >= CGAL_PI / 4 && turned <= 7 * CGAL_PI / 4))
+          return false;
+        target = w;
+        return true;
+      }, true);
+      if(target != npos)
+      {
+        border_angle[target] -= double(index[v]) * CGAL_PI / 2;  // what the next one finds there
+        transfer(v, target, index[v]);
+        index[target] = 0;
+        ++report.to_border;
+      }
+      reset();
     }
-    reset();
-  }
+  };
+  give_to_border();
 
   // Close pairs.
   struct Pair
@@ -335,6 +341,8 @@ Singularity_separation separate_close_singularities(const CornerMesh& M, double 
     if(move_away(pair.a, index[pair.a]))
       ++report.separated;
   }
+  // a singularity moved apart may have landed next to the border
+  give_to_border();
   return report;
 }
 

@@ -118,6 +118,45 @@ inline std::vector<char> folded_faces(const Chart_mesh& M)
   return folded;
 }
 
+// The faces of `region` that folded_faces() would flag: not positive, or around a
+// wound vertex of the region (each face once).
+inline std::size_t region_folds(const Chart_mesh& M, const std::vector<std::size_t>& region)
+{
+  std::vector<std::size_t> flagged;
+  for(std::size_t f : region)
+  {
+    if(M.face_orientation(f) <= 0)
+      flagged.push_back(f);
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t v = M.vertex[3 * f + k];
+      if(wound_vertex(M, v))
+        for(std::size_t c : M.fan[v])
+          flagged.push_back(Chart_mesh::face(c));
+    }
+  }
+  std::sort(flagged.begin(), flagged.end());
+  return std::size_t(std::unique(flagged.begin(), flagged.end()) - flagged.begin());
+}
+
+// The uv of the corners of the faces of `region`, to put back with restore_region_uv().
+inline std::vector<P2> region_uv(const Chart_mesh& M, const std::vector<std::size_t>& region)
+{
+  std::vector<P2> uv;
+  for(std::size_t f : region)
+    for(std::size_t k = 0; k < 3; ++k)
+      uv.push_back(M.uv[3 * f + k]);
+  return uv;
+}
+
+inline void restore_region_uv(Chart_mesh& M, const std::vector<std::size_t>& region, const std::vector<P2>& uv)
+{
+  std::size_t i = 0;
+  for(std::size_t f : region)
+    for(std::size_t k = 0; k < 3; ++k)
+      M.uv[3 * f + k] = uv[i++];
+}
+
 // Tutte's embedding with a connection: each free vertex v has its uv X_v in the chart of
 // face(fan[v][0]); a neighbour w seen in face f contributes X_v - A_v^-1 (A_w X_w), with
 // A_v, A_w the exact grid maps from the vertices' charts to the chart of f. Cones and
@@ -277,9 +316,14 @@ inline bool spread_cone_star(Chart_mesh& M, std::size_t v, const std::vector<cha
   return true;
 }
 
+// Re-embeds `region`: mode 0 untangles its free vertices, mode 1 places them by
+// Tutte's embedding first, mode 2 re-spreads the stars of its cones first. True
+// if the region comes out unfolded; otherwise its uv are put back, unless
+// keep_progress and the re-embedding has fewer folds (region_folds()).
 inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region, const std::vector<char>& in_region,
-                          Fold_over_result& report, int mode)
+                          Fold_over_result& report, int mode, bool keep_progress = false)
 {
+  const std::size_t region_folds_before = keep_progress ? region_folds(M, region) : 0;
   const bool tutte = mode >= 1;
   std::vector<std::size_t> local(M.V, npos);
   std::vector<std::size_t> free_vertices;
@@ -301,28 +345,8 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
   if(free_vertices.empty())
     return false;
   const std::size_t n = free_vertices.size();
-  std::vector<P2> saved;
-  for(std::size_t f : region)
-    for(std::size_t k = 0; k < 3; ++k)
-      saved.push_back(M.uv[3 * f + k]);
-  auto restore = [&]() {
-    std::size_t i = 0;
-    for(std::size_t f : region)
-      for(std::size_t k = 0; k < 3; ++k)
-        M.uv[3 * f + k] = saved[i++];
-  };
-  // the faces of the region that are not positive, and its wound vertices
-  auto folds = [&]() {
-    std::size_t count = 0;
-    for(std::size_t f : region)
-    {
-      count += M.face_orientation(f) <= 0;
-      for(std::size_t k = 0; k < 3; ++k)
-        count += wound_vertex(M, M.vertex[3 * f + k]);  // (counted in each of its faces)
-    }
-    return count;
-  };
-  const std::size_t folds_before = folds();
+  const std::vector<P2> saved = region_uv(M, region);
+  auto restore = [&]() { restore_region_uv(M, region, saved); };
   // every face positive and no wound vertex left: a re-embedding that leaves the
   // branch point of a region with no reversed face as it was is no repair
   auto unfolded = [&]() {
@@ -486,8 +510,7 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
 #endif
   if(!ok)
   {
-    // fewer folds is progress that the next, larger region starts from
-    if(!(folds() < folds_before))
+    if(!keep_progress || !(region_folds(M, region) < region_folds_before))
       restore();
     return false;
   }
@@ -561,8 +584,21 @@ inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_o
       std::vector<char> mask(M.F, 0);
       for(std::size_t f : region)
         mask[f] = 1;
-      if(!repair_region(M, region, mask, report, 0) && !repair_region(M, region, mask, report, 1))
-        repair_region(M, region, mask, report, 2);
+      if(repair_region(M, region, mask, report, 0))
+        continue;
+      // Tutte's embedding, then with the cones' stars re-spread, both from the
+      // map's uv; when neither unfolds the region, the one with fewer folds
+      // than the map is kept, as the start of the next, larger region
+      const std::vector<P2> start = region_uv(M, region);
+      if(repair_region(M, region, mask, report, 1, true))
+        continue;
+      const std::size_t folds_tutte = region_folds(M, region);
+      const std::vector<P2> tutte = region_uv(M, region);
+      restore_region_uv(M, region, start);
+      if(repair_region(M, region, mask, report, 2, true))
+        continue;
+      if(folds_tutte < region_folds(M, region))
+        restore_region_uv(M, region, tutte);
     }
   }
   folded = folded_faces(M);

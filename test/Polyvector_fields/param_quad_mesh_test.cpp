@@ -1697,9 +1697,10 @@ Mesh quad_bent_strip(double angle, Quad_uv_map& uv)
 
 } // namespace
 
-// Quads folded against the surface are never returned: the strip bent by three quarter
-// turns gives FOLDED_QUAD with the number of folded quads (both), and the output mesh is
-// left untouched; bent by a quarter turn, it gives its two quads.
+// Quads folded against the surface are never returned: without the filling, the strip
+// bent by three quarter turns gives FOLDED_QUAD with the number of folded quads (both), and
+// the output mesh is left untouched; with it, its triangles are split into quads; bent by a
+// quarter turn, it gives its two quads.
 TEST(QuadFolds, FoldedQuadIsAnError)
 {
   {
@@ -1713,17 +1714,42 @@ TEST(QuadFolds, FoldedQuadIsAnError)
   }
   Quad_uv_map uv;
   const Mesh tm = quad_bent_strip(3 * pi / 2, uv);
-  // without the repair, and with it: no corner position on the surface unfolds them
+  // without the repair, and with it but without the filling: no corner position on the
+  // surface unfolds them
   for(std::size_t rings : { std::size_t(0), std::size_t(6) })
   {
     Mesh qm = grid(1, 3);
     PVF::Quad_extraction_result r;
-    EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r, PVF::parameters::fold_over_repair_rings(rings)), PVF::Error_code::FOLDED_QUAD);
+    EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r,
+                                     PVF::parameters::fold_over_repair_rings(rings, PVF::parameters::fill_fold_overs(false))),
+              PVF::Error_code::FOLDED_QUAD);
     EXPECT_EQ(r.flipped_faces, 0u);
     EXPECT_EQ(r.folded_quads, 2u);
     EXPECT_EQ(r.unfolded_quads, 0u);
     EXPECT_NE(r.diagnostic.find("2 of the 2 quads fold against the surface"), std::string::npos) << r.diagnostic;
     EXPECT_EQ(num_faces(qm), 6u);  // untouched
+  }
+  // with the filling (the default): the two quads are the whole strip, too much of it to
+  // fill, so its triangles are split into quads, three each, on the surface and unfolded
+  {
+    Mesh qm;
+    PVF::Quad_extraction_result r;
+    ASSERT_EQ(PVF::extract_quad_mesh(tm, uv, qm, r), PVF::Error_code::SUCCESS) << r.diagnostic;
+    EXPECT_EQ(r.split_components, 1u);
+    EXPECT_EQ(r.split_triangles, num_faces(tm));
+    EXPECT_EQ(num_faces(qm), 3 * num_faces(tm));
+    EXPECT_EQ(euler_characteristic(qm), euler_characteristic(tm));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(qm));
+    // each quad lies in one input triangle: its corners are coplanar, and it turns like the triangle
+    for(Face f : faces(qm))
+    {
+      std::vector<Point> c;
+      for(Halfedge h : halfedges_around_face(halfedge(f, qm), qm))
+        c.push_back(qm.point(target(h, qm)));
+      ASSERT_EQ(c.size(), 4u);
+      const Vector n1 = CGAL::cross_product(c[1] - c[0], c[2] - c[0]), n2 = CGAL::cross_product(c[2] - c[0], c[3] - c[0]);
+      EXPECT_GT(n1 * n2, 0.999 * std::sqrt(n1.squared_length() * n2.squared_length()));
+    }
   }
   EXPECT_STREQ(PVF::get_error_message(PVF::Error_code::FOLDED_QUAD),
                "a quad of the quad mesh is folded against the surface (neither diagonal gives two triangles facing the surface's side)");

@@ -22,6 +22,7 @@
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/comb_frame_field.h>
 
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/generators.h>
 
@@ -477,7 +478,9 @@ void axis_frames(const Mesh& tm, Mesh::Property_map<Face, std::vector<Complex> >
             PVF::Error_code::SUCCESS);
 }
 
-PVF::Error_code quads_of(const Mesh& tm, double h, Mesh& quads, PVF::Quad_extraction_result& extraction)
+// `split`: split_components_without_cells
+PVF::Error_code quads_of(const Mesh& tm, double h, Mesh& quads, PVF::Quad_extraction_result& extraction,
+                         bool split = false)
 {
   Mesh& m = const_cast<Mesh&>(tm);
   auto field = m.add_property_map<Face, std::vector<Complex> >("f:axes").first;
@@ -493,7 +496,8 @@ PVF::Error_code quads_of(const Mesh& tm, double h, Mesh& quads, PVF::Quad_extrac
   EXPECT_EQ(code, PVF::Error_code::SUCCESS);
   if(code != PVF::Error_code::SUCCESS)
     return code;
-  return PVF::extract_quad_mesh(bundle, boost::make_assoc_property_map(uv), r, quads, extraction);
+  return PVF::extract_quad_mesh(bundle, boost::make_assoc_property_map(uv), r, quads, extraction,
+                                PVF::parameters::split_components_without_cells(split));
 }
 
 // The 2-triangle unit square with quads of size 2: no integer cell. An
@@ -542,6 +546,28 @@ TEST(RobustQuads, ComponentWithoutQuadIsNamed)
             std::string::npos)
     << extraction.diagnostic;
   EXPECT_EQ(num_faces(quads), 0u);
+  // split_components_without_cells: the small square's two triangles become six quads,
+  // the grid keeps its 16, two components of quads (the square's a disk: chi 1)
+  Mesh split;
+  ASSERT_EQ(quads_of(tm, 1.0, split, extraction, true), PVF::Error_code::SUCCESS) << extraction.diagnostic;
+  EXPECT_EQ(extraction.split_small_components, 1u);
+  EXPECT_EQ(extraction.split_components, 1u);
+  EXPECT_EQ(extraction.split_triangles, 2u);
+  EXPECT_EQ(num_faces(split), 16u + 6u);
+  auto fcc = split.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
+  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(split, fcc), 2u);
+  std::size_t small_quads = 0;
+  for(Mesh::Face_index f : faces(split))
+  {
+    const Point c = CGAL::centroid(split.point(target(halfedge(f, split), split)),
+                                   split.point(target(next(halfedge(f, split), split), split)),
+                                   split.point(target(next(next(halfedge(f, split), split), split), split)));
+    small_quads += c.x() > 9;  // the square lies at x in [10, 10.4]
+  }
+  EXPECT_EQ(small_quads, 6u);
+  // every component without a cell: still an error, the quad size is wrong
+  const Mesh square = grid(1, 1);
+  EXPECT_EQ(quads_of(square, 2.0, split, extraction, true), PVF::Error_code::NO_INTEGER_CELL);
 }
 
 } // namespace

@@ -35,6 +35,7 @@
 #include "stages.h"
 #include "summary.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -45,48 +46,86 @@
 
 namespace pvf_cli {
 
+// With the default quad size, the quads are made finer, by this factor, until every
+// input vertex and face centroid is within the deviation bound of them.
+constexpr double finer_size = 0.70710678118654752;  // 1 / sqrt(2): twice the quads
+constexpr std::size_t finer_sizes = 4;
+constexpr double default_max_deviation = 0.009;  // of the bounding-box diagonal
+
 int run(const Options& o)
 {
   Stopwatch clock;
   Output_files outputs(o);
-  Input_mesh input = load_mesh(o);
-  clock.lap("load mesh");
-  const Quad_size size = choose_quad_size(o, input);
-  if(size.refined())
-    clock.lap("refinement");
-  // The frames, numbering and connection of the mesh, built once for every stage.
-  const Bundle bundle(input.tm);
-  check(bundle.status(), "mesh '" + o.mesh + "'");
-  clock.lap("frames and connection");
-  Curvature curvature;
-  const Constraint_set constraints = gather_constraints(o, input, size, bundle, curvature, clock);
-  const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
-  const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
-  Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
-  Quad_stage quads;
-  try
+  Sizing sizing;
+  sizing.bound = o.max_deviation >= 0 ? o.max_deviation : default_max_deviation;
+  for(std::size_t attempt = 0;; ++attempt)
   {
-    // A map without flipped faces whose extraction still finds fold-overs it
-    // cannot repair (degenerate triangles): the map again, with the integers
-    // rounded in every stiffening round (another search). A map with flipped
-    // faces had that search already (compute_integer_grid_map()).
-    if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, param.result.flipped_faces == 0))
+    Input_mesh input = load_mesh(o);
+    clock.lap("load mesh");
+    const Quad_size size = choose_quad_size(o, input, std::pow(finer_size, double(attempt)));
+    if(size.refined())
+      clock.lap("refinement");
+    // The frames, numbering and connection of the mesh, built once for every stage.
+    const Bundle bundle(input.tm);
+    check(bundle.status(), "mesh '" + o.mesh + "'");
+    clock.lap("frames and connection");
+    Curvature curvature;
+    const Constraint_set constraints = gather_constraints(o, input, size, bundle, curvature, clock);
+    const Field field = design_field(o, input.tm, bundle, constraints, curvature, clock);
+    const Analysis analysis = analyse_field(o, input.tm, bundle, field, curvature, clock);
+    Parametrization param = parametrize(o, input.tm, size, constraints, field, clock);
+    Quad_stage quads;
+    try
     {
-      param = parametrize(o, input.tm, size, constraints, field, clock, false);
-      quads = Quad_stage();
-      make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+      // A map without flipped faces whose extraction still finds fold-overs it
+      // cannot repair (degenerate triangles): the map again, with the integers
+      // rounded in every stiffening round (another search). A map with flipped
+      // faces had that search already (compute_integer_grid_map()).
+      if(!make_quad_mesh(o, input.tm, bundle, param, quads, clock, param.result.flipped_faces == 0))
+      {
+        param = parametrize(o, input.tm, size, constraints, field, clock, false);
+        quads = Quad_stage();
+        make_quad_mesh(o, input.tm, bundle, param, quads, clock);
+      }
+      // How far the quads are from the input. With the default size, finer quads while
+      // that brings them closer (by a tenth at least); then, at the last size (or at a
+      // size given with a bound), the components that the quads do not follow within the
+      // bound are split into quads on their triangles, from the same map.
+      const bool bounded = size.default_size || o.max_deviation >= 0;
+      const double diagonal = bounding_box_diagonal(input.tm);
+      if(quads.computed && bounded)
+      {
+        sizing.deviation = quads.extraction.largest_input_distance / diagonal;
+        if(sizing.deviation > sizing.bound)
+        {
+          const bool closer = sizing.tries.empty() || sizing.deviation < 0.9 * sizing.tries.back().second;
+          if(size.default_size && attempt < finer_sizes && closer)
+          {
+            sizing.tries.emplace_back(size.h, sizing.deviation);
+            continue;
+          }
+          sizing.split_at = sizing.deviation;
+          quads = Quad_stage();
+          make_quad_mesh(o, input.tm, bundle, param, quads, clock, false, sizing.bound * diagonal);
+          sizing.deviation = quads.extraction.largest_input_distance / diagonal;
+          if(sizing.deviation > sizing.bound)  // not expected: the split components lie on the surface
+            throw Failure("quad mesh: an input point lies " + std::to_string(100 * sizing.deviation) +
+                          "% of the bounding-box diagonal from the quads, beyond the bound " +
+                          std::to_string(100 * sizing.bound) + "%");
+        }
+      }
     }
+    catch(const Failure&)
+    {
+      // What the stages before it made (the map's flips and features, say), so
+      // that the error that follows can be read against them; no file is written.
+      print_summary(o, input, size, sizing, constraints, field, analysis, param, quads, outputs, clock, false);
+      throw;
+    }
+    write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
+    print_summary(o, input, size, sizing, constraints, field, analysis, param, quads, outputs, clock);
+    return EXIT_SUCCESS;
   }
-  catch(const Failure&)
-  {
-    // What the stages before it made (the map's flips and features, say), so
-    // that the error that follows can be read against them; no file is written.
-    print_summary(o, input, size, constraints, field, analysis, param, quads, outputs, clock, false);
-    throw;
-  }
-  write_outputs(o, input.tm, constraints, analysis, param, quads, outputs, clock);
-  print_summary(o, input, size, constraints, field, analysis, param, quads, outputs, clock);
-  return EXIT_SUCCESS;
 }
 
 } // namespace pvf_cli

@@ -79,6 +79,12 @@ const char* usage =
   "  --edge-length H          the quad size in mesh units, > 0 (default: the mean edge length)\n"
   "  --quads N                about N quads: the quad size is sqrt(surface area / N) (instead of\n"
   "                           --edge-length)\n"
+  "  --max-deviation F        every input vertex and face centroid within F bounding-box diagonals\n"
+  "                           of the extracted quads, before --planarize (default 0.009 with the\n"
+  "                           default quad size, which is made\n"
+  "                           finer, by sqrt(2) up to 4 times, until it is; none with --edge-length or\n"
+  "                           --quads, unless given); at the last size, a component still farther\n"
+  "                           gets its triangles split into quads\n"
   "  --singularity-separation F  singularities of the field closer than F quads are cancelled\n"
   "                           (opposite indices), merged (into one vertex of valence 3 to 6) or moved\n"
   "                           apart, since two of them on one integer point fold the map over\n"
@@ -145,6 +151,7 @@ struct Options
   double edge_length = 0;  // 0: the default, the mean edge length
   std::size_t quads = 0;   // --quads N: the edge length from the area; 0: not given
   double singularity_separation = 1;  // in quads
+  double max_deviation = -1;  // --max-deviation, in bounding-box diagonals; < 0: not given
   std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
   std::string out_html, out_ply;  // --out-html, --out-ply
   double planarity_threshold = 0;  // 0: no planarization
@@ -296,6 +303,7 @@ Options parse_options(int argc, char** argv)
     else if(flag == "--parametrize") o.parametrize = true;
     else if(flag == "--edge-length") o.edge_length = line.number(0, 1e300, true);
     else if(flag == "--quads") o.quads = line.integer(1, 1000000000ull);
+    else if(flag == "--max-deviation") o.max_deviation = line.number(0, 1, true);
     else if(flag == "--singularity-separation")
     {
       o.singularity_separation = line.number(0, 1e6);
@@ -370,6 +378,8 @@ Options parse_options(int argc, char** argv)
     throw Failure("--edge-length goes with --parametrize", 2);
   if(o.quads > 0 && !o.parametrize)
     throw Failure("--quads goes with --parametrize or --quad-mesh", 2);
+  if(o.max_deviation >= 0 && o.out_quads.empty())
+    throw Failure("--max-deviation goes with --quad-mesh", 2);
   if(o.quads > 0 && o.edge_length > 0)
     throw Failure("--quads and --edge-length both set the quad size: give one", 2);
   if(separation_given && !o.parametrize)

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <CGAL/Polyvector_fields/IO/constraints.h>
@@ -55,6 +56,8 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 #include <optional>
 #include <string>
 #include <vector>
@@ -97,9 +100,28 @@ struct Quad_size
 {
   double h = 0;                // the quad size, in mesh units
   bool from_mean_edge = false; // the default rule chose the mean edge length (the map's own default)
+  bool default_size = false;   // neither --edge-length nor --quads
+  double scale = 1;            // of the default size (made finer when the quads are too far from the surface)
   std::size_t faces_before = 0, faces_after = 0;
   bool refined() const { return faces_after != faces_before; }
 };
+
+// The default quad sizes tried, with how far the quads were from the input (in
+// bounding-box diagonals), and the deviation of the quads that were kept.
+struct Sizing
+{
+  std::vector<std::pair<double, double> > tries;  // (quad size, deviation) of the sizes made finer
+  double deviation = -1;  // of the quads kept; < 0: not measured
+  double split_at = -1;   // >= 0: the deviation at the last size, before the far components were split
+  double bound = 0;
+};
+
+double bounding_box_diagonal(const Mesh& tm)
+{
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
+  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
 
 // At least this many quads by default, so that a coarse mesh (a box of 12
 // triangles, a 50-face scan) gets a useful quad mesh.
@@ -121,9 +143,11 @@ auto feature_parameters(const Options& o, double quad_size)
     o.boundary_alignment, PVF::parameters::minimum_feature_length(o.parametrize ? minimum_crease_quads * quad_size : 0.0));
 }
 
-Quad_size choose_quad_size(const Options& o, Input_mesh& input)
+// `scale` multiplies the default size.
+Quad_size choose_quad_size(const Options& o, Input_mesh& input, double scale = 1)
 {
   Quad_size q;
+  q.scale = scale;
   Mesh& tm = input.tm;
   q.faces_before = q.faces_after = num_faces(tm);
   if(!o.parametrize)
@@ -140,8 +164,9 @@ Quad_size choose_quad_size(const Options& o, Input_mesh& input)
       sum += CGAL::Polygon_mesh_processing::edge_length(e, tm);
     const double mean = num_edges(tm) > 0 ? sum / double(num_edges(tm)) : 0;
     const double small = std::sqrt(area / default_minimum_quads);
-    q.from_mean_edge = mean <= small;
-    q.h = q.from_mean_edge ? mean : small;
+    q.from_mean_edge = mean <= small && scale == 1;
+    q.h = scale * (mean <= small ? mean : small);
+    q.default_size = true;
   }
   if(!(q.h > 0) || !std::isfinite(q.h))
     throw Failure("mesh '" + o.mesh + "': it has no area, so no quad size");
@@ -579,13 +604,19 @@ struct Quad_stage
 
 // Returns false, and makes nothing, when the extraction could not repair the
 // fold-overs of a map that can be computed again (may_retry).
+// `max_distance` > 0: the components of the surface farther than that from their quads
+// are split into quads (extract_quad_mesh()'s max_input_distance).
 bool make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, const Parametrization& param, Quad_stage& q,
-                    Stopwatch& clock, bool may_retry = false)
+                    Stopwatch& clock, bool may_retry = false, double max_distance = 0)
 {
   if(o.out_quads.empty())
     return true;
   const PVF::internal::Timer extraction_timer;
-  const PVF::Error_code extracted = PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction);
+  // A component too small for a whole quad gets its triangles split into quads (the
+  // summary names how many), rather than failing the whole mesh.
+  const PVF::Error_code extracted =
+    PVF::extract_quad_mesh(bundle, param.uv, param.result, q.quads, q.extraction,
+                           PVF::parameters::split_components_without_cells(true, PVF::parameters::max_input_distance(max_distance)));
   if(extracted == PVF::Error_code::UNREPAIRABLE_FOLD_OVER && may_retry)
   {
     clock.lap("quad mesh");

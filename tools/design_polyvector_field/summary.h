@@ -59,7 +59,8 @@ std::string solver_report(const PVF::Default_sparse_solver& solver)
   return m.str();
 }
 
-void print_summary(const Options& o, const Input_mesh& input, const Quad_size& size, const Constraint_set& constraints,
+void print_summary(const Options& o, const Input_mesh& input, const Quad_size& size, const Sizing& sizing,
+                   const Constraint_set& constraints,
                    const Field& field, const Analysis& a, const Parametrization& param, const Quad_stage& q, const Output_files& outputs,
                    const Stopwatch& clock, bool written = true)
 {
@@ -101,6 +102,23 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
   }
   else if(r.isolated_vertices)
     std::cout << "note            " << r.isolated_vertices << " isolated vertices are ignored\n";
+  if(!sizing.tries.empty() || sizing.split_at >= 0)
+  {
+    std::cout << "quad size       " << size.h;
+    if(!sizing.tries.empty())
+    {
+      std::cout << ", the default made finer " << sizing.tries.size() << " times: at";
+      for(std::size_t i = 0; i < sizing.tries.size(); ++i)
+        std::cout << (i ? "," : "") << " " << sizing.tries[i].first << " an input point was "
+                  << 100 * sizing.tries[i].second << "%";
+      std::cout << " of the bounding-box diagonal from the quads";
+    }
+    std::cout << " (bound " << 100 * sizing.bound << "%)";
+    if(sizing.split_at >= 0)
+      std::cout << "; at " << size.h << ", " << 100 * sizing.split_at
+                << "%: the components farther than the bound split into quads";
+    std::cout << "\n";
+  }
   if(size.refined())
     std::cout << "refinement      " << size.faces_before << " -> " << size.faces_after
               << " faces: edges longer than two quads (" << 2 * size.h
@@ -193,6 +211,22 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     if(e.unfolded_quads > 0)
       std::cout << "; " << e.unfolded_quads << " folded quads repaired (" << e.moved_quad_vertices
                 << " vertices moved on the surface)";
+    if(e.filled_holes > 0)
+      std::cout << "; " << e.cut_faces << " triangles that still folded cut out of the map, the " << e.filled_holes
+                << " holes they left filled with " << e.filling_quads << " quads";
+    if(e.split_components > 0)
+      std::cout << "; " << e.split_components << " of the " << e.components << " components ("
+                << e.split_triangles << " triangles) split into quads, three per triangle: "
+                << e.split_small_components << " smaller than a quad, " << e.split_far_components
+                << " that the quads could not follow within the deviation bound, "
+                << e.split_components - e.split_small_components - e.split_far_components
+                << " whose fold-overs could not be filled";
+    if(e.refilled_quads > 0)
+      std::cout << "; " << e.refilled_quads << " quads still folded cut out with the quads around them and filled";
+    if(e.snapped_tips > 0)
+      std::cout << "; " << e.snapped_tips << " corners moved onto tips of the surface finer than the quads";
+    if(sizing.deviation >= 0)
+      std::cout << "; every input point within " << 100 * sizing.deviation << "% of the bounding-box diagonal";
     std::cout << "\nplanarity       max " << 100 * q.before.max << "%, mean " << 100 * q.before.mean << "%";
     if(q.planarized)
     {

@@ -43,6 +43,16 @@ struct Quad_extraction_result
   std::size_t repaired_regions = 0;       ///< fold-over regions re-embedded
   std::size_t repaired_vertices = 0;      ///< vertices whose uv the repair moved
   std::size_t repair_rings = 0;           ///< largest ring count the repair needed
+  std::size_t filled_holes = 0;           ///< holes left by the fold-overs that the repair could not unfold, filled with quads (see <b>Fold-overs</b>)
+  std::size_t filling_quads = 0;          ///< quads of those fillings (counted in `quads`)
+  std::size_t replaced_quads = 0;         ///< quads of the map that a hole enclosed, replaced by its filling
+  std::size_t filling_rings = 0;          ///< largest ring count a hole's region grew by around its fold-overs
+  std::size_t refilled_quads = 0;         ///< quads still folded after their repair, cut out with the quads around them and filled
+  std::size_t split_components = 0;       ///< connected components whose fold-overs could not be filled: their triangles are split into quads
+  std::size_t split_small_components = 0; ///< of which components without a whole cell, with `split_components_without_cells`
+  std::size_t split_far_components = 0;  ///< of which components farther than `max_input_distance` from their quads
+  std::size_t split_triangles = 0;        ///< the triangles so split (three quads each, counted in `quads`)
+  std::size_t cut_faces = 0;              ///< triangles cut out of the map around those fold-overs
   std::size_t seam_edges = 0;             ///< interior edges with a non-identity transition
   std::size_t degenerate_uv_edges = 0;    ///< interior edges of zero uv length
   // integer points and iso-lines
@@ -64,6 +74,8 @@ struct Quad_extraction_result
   std::size_t folded_quads = 0;           ///< quads folded against the surface after the repair (`FOLDED_QUAD`; 0 on success)
   std::size_t unfolded_quads = 0;         ///< folded quads repaired by moving their corners on the surface
   std::size_t moved_quad_vertices = 0;    ///< quad vertices the repair moved (off their integer points, onto input vertices or edge midpoints)
+  std::size_t snapped_tips = 0;           ///< quad corners moved onto input vertices that were far from the quads (see <b>Tips</b>)
+  double largest_input_distance = 0;      ///< the largest distance of an input vertex or face centroid to the quads (each cut along its diagonal from its first corner), after the tips are snapped
   std::size_t split_vertices = 0;         ///< vertices duplicated because their kept faces formed several fans
   std::size_t split_cells = 0;            ///< trimmed cells (with `keep_trimmed_boundary`) that went around the surface or passed twice through a point, cut into simple polygons (counted in `trimmed_polygons` by their pieces)
   std::size_t added_vertices = 0;         ///< vertices added inside iso-line segments of split cells that closed on themselves or joined the same two points as another one
@@ -130,8 +142,27 @@ struct Quad_extraction_result
 /// Each region is tried on one ring, then two, up to `fold_over_repair_rings`;
 /// when no re-embedding of a region unfolds it, the one that leaves the fewest
 /// folded triangles (those of `det <= 0` and around wound vertices) is kept if
-/// that is fewer than before, and the next, larger region starts from it. Reported in `result`; what the repair cannot unfold
-/// makes the call fail with `UNREPAIRABLE_FOLD_OVER`.
+/// that is fewer than before, and the next, larger region starts from it. Reported in `result`.
+///
+/// <b>Holes.</b> What the repair cannot unfold is cut out of the map (with `fill_fold_overs`, the
+/// default, and whole cells only): the triangles that still fold, and those around a vertex whose
+/// remaining triangles would form several fans or wind. The whole cells of the rest are
+/// extracted; they stop short of the cut, and leave a hole around it bounded by a loop of quad
+/// edges. The surface under each hole, grown ring by ring (up to twice `fold_over_repair_rings`)
+/// until it is a disk that holds the loop (a hole of the surface inside it is closed by a fan for
+/// this), is parametrized on the unit disk by mean value coordinates (Floater 2003), one to one;
+/// the loop is a simple polygon there, filled with quads: a constrained Delaunay triangulation
+/// with points on a square lattice inside, its triangles merged in pairs into convex quads (a
+/// largest matching) and the others split, an odd number of sides each, at their midpoints, the
+/// inner points then smoothed. The new corners go back to the surface through the
+/// parametrization's triangles, so they lie on it. A hole at the surface's border is closed along
+/// the border (new corners on its edges), and a hole of the surface inside the loop stays a hole.
+/// A region may not take more than half of its connected component. A component whose holes
+/// cannot all be filled gets its triangles split into quads, three each, around their centroids
+/// and through their edge midpoints (`result.split_components`). Without `fill_fold_overs`, or
+/// with `keep_trimmed_boundary`, what the repair cannot unfold makes the call fail with
+/// `UNREPAIRABLE_FOLD_OVER`. The fillings are counted in `result.filled_holes` and
+/// `result.filling_quads`; their quads are not aligned with the map, and have corners of any valence.
 ///
 /// <b>Folded quads.</b> Every quad is checked against the input surface under it: it is
 /// folded when neither of its diagonals splits it into two triangles that face the side
@@ -140,8 +171,25 @@ struct Quad_extraction_result
 /// (a crease or a thin ridge finer than the quads). Unless `fold_over_repair_rings` is
 /// 0, a corner of a folded quad is then moved to the nearest point of the surface under
 /// its quads (a vertex of an input face, or an edge midpoint) that leaves every quad at
-/// that corner unfolded (`result.unfolded_quads`, `result.moved_quad_vertices`); a quad
-/// still folded makes the call fail with `FOLDED_QUAD`.
+/// that corner unfolded (`result.unfolded_quads`, `result.moved_quad_vertices`). With
+/// `fill_fold_overs`, a quad still folded is cut out with the quads that share a corner with
+/// it, and the hole filled as above (`result.refilled_quads`); otherwise, or if that fails, a
+/// quad still folded makes the call fail with `FOLDED_QUAD`.
+///
+/// <b>Tips.</b> An input vertex farther than `tip_snapping_distance` mean quad sides from the quads
+/// (the tip of a spike, the end of a part thinner than the quads) moves the nearest corner of its
+/// nearest quad onto itself, if every quad at that corner stays unfolded; a corner on the border of
+/// the quads never moves, a vertex on the surface's border pulls none, each corner moves once
+/// (`result.snapped_tips`), and with `keep_trimmed_boundary` nothing moves. Then
+/// `result.largest_input_distance` is the largest distance of an input vertex or face centroid
+/// to the quads, each cut along the diagonal from its first corner. With `max_input_distance`, a
+/// connected component whose input is farther than that from the quads gets its triangles split
+/// into quads (see <b>Holes</b>; `result.split_far_components`), which lie on them.
+///
+/// <b>Components.</b> Each connected component of `tm` gets its own quads. One where the map has
+/// no whole cell (smaller than a quad) makes the call fail with `NO_INTEGER_CELL`, or, with
+/// `split_components_without_cells`, gets its triangles split into quads as above (unless no
+/// component has a cell).
 ///
 /// All computations are done in `double` (and exact rationals where stated),
 /// whatever the kernels of `tm` and `quad_mesh`.
@@ -174,6 +222,34 @@ struct Quad_extraction_result
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{6}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{fill_fold_overs}
+///     \cgalParamDescription{cut out what the fold-over repair leaves and fill the holes with quads, and
+///                           fill the quads still folded after their repair in the same way (see <b>Holes</b>);
+///                           given with `Polyvector_fields::parameters::fill_fold_overs()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{tip_snapping_distance}
+///     \cgalParamDescription{an input vertex farther than this many mean quad sides from the quads pulls the
+///                           nearest quad corner onto itself (0: none; see <b>Tips</b>); given with
+///                           `Polyvector_fields::parameters::tip_snapping_distance()`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{split_components_without_cells}
+///     \cgalParamDescription{split the triangles of a connected component without a whole cell into quads
+///                           instead of failing (see <b>Components</b>); given with
+///                           `Polyvector_fields::parameters::split_components_without_cells()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_input_distance}
+///     \cgalParamDescription{a connected component with an input vertex or face centroid farther than this
+///                           from the quads gets its triangles split into quads (0: none; see <b>Tips</b>); given
+///                           with `Polyvector_fields::parameters::max_input_distance()`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -197,7 +273,8 @@ struct Quad_extraction_result
 ///          vertex) or `NON_MANIFOLD_MESH` (a vertex whose faces do not form one fan); `NON_FINITE_VALUE` (a
 ///          coordinate or a uv value); `NOT_AN_INTEGER_GRID_MAP` (no face of positive uv area, a transition
 ///          that is not a grid symmetry, a vertex of non-zero index off the integer grid, or traces that do not
-///          close up: see `result.diagnostic`); `UNREPAIRABLE_FOLD_OVER`; `NO_INTEGER_CELL` if a connected
+///          close up: see `result.diagnostic`); `UNREPAIRABLE_FOLD_OVER` (without `fill_fold_overs`, with
+///          `keep_trimmed_boundary`, or when every triangle would be cut out: see <b>Holes</b>); `NO_INTEGER_CELL` if a connected
 ///          component of `tm` gets no face, the quad size of the map being larger than that part of the
 ///          surface (`result.diagnostic` names the first such component; never an empty or partial quad
 ///          mesh); `FOLDED_QUAD` if a quad is still folded against the surface after the repair (see <b>Folded

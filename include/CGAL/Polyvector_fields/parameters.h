@@ -106,6 +106,19 @@ CGAL_PVF_ADD_NAMED_PARAMETER(stiffening_keeps_integers_t, stiffening_keeps_integ
 CGAL_PVF_ADD_NAMED_PARAMETER(keep_trimmed_boundary_t, keep_trimmed_boundary, keep_trimmed_boundary)
 // `std::size_t`: the largest ring count of a fold-over repair region of `extract_quad_mesh()` (0: no repair); default 6.
 CGAL_PVF_ADD_NAMED_PARAMETER(fold_over_repair_rings_t, fold_over_repair_rings, fold_over_repair_rings)
+// `bool`: `extract_quad_mesh()` cuts the fold-overs that the repair leaves out of the map and fills the holes
+// they leave in the quads with quads (whole cells only); default `true` (`false`: they make the call fail).
+CGAL_PVF_ADD_NAMED_PARAMETER(fill_fold_overs_t, fill_fold_overs, fill_fold_overs)
+// `double >= 0`: an input vertex farther than this many mean quad sides from the quads of `extract_quad_mesh()`
+// moves the nearest quad corner onto itself; default 0.3 (0: none).
+CGAL_PVF_ADD_NAMED_PARAMETER(tip_snapping_distance_t, tip_snapping_distance, tip_snapping_distance)
+// `bool`: a connected component where the map of `extract_quad_mesh()` has no whole cell (smaller than a quad)
+// gets its triangles split into quads instead of failing the call; default `false`.
+CGAL_PVF_ADD_NAMED_PARAMETER(split_components_without_cells_t, split_components_without_cells,
+                             split_components_without_cells)
+// `double >= 0`: a connected component of the input of `extract_quad_mesh()` with a vertex or face centroid
+// farther than this from the quads gets its triangles split into quads; default 0 (none).
+CGAL_PVF_ADD_NAMED_PARAMETER(max_input_distance_t, max_input_distance, max_input_distance)
 // `double > 0`: the largest face planarity that `planarize_quad_mesh()` must reach; default 0.01 (1%).
 CGAL_PVF_ADD_NAMED_PARAMETER(planarity_threshold_t, planarity_threshold, planarity_threshold)
 // `double > 0`: the weight of the closeness (proximal) term of `planarize_quad_mesh()`; default 1.

@@ -49,8 +49,10 @@
 //  - a failed extraction writes no face; a SUCCESS quad mesh is a non-empty
 //    valid polygon mesh of quads (polygons of at least 3 corners with
 //    keep_trimmed_boundary, and then the Euler characteristic of the input),
-//    as many faces as result.faces, no folded quad, finite points, every
-//    vertex on the input surface (1e-9 of its size).
+//    as many faces as result.faces, no folded quad, no isolated vertex, finite
+//    points, every vertex on the input surface (1e-9 of its size), and on a
+//    closed input, closed quads of its Euler characteristic (whole cells, the
+//    holes of cut-out fold-overs filled, components split into quads).
 
 #include "fuzz_support.h"
 
@@ -371,6 +373,15 @@ PVF_FUZZ_TARGET(quad_map)
     else
       PVF_FUZZ_CHECK(corners == 4, "a face that is not a quad");
   }
+  for(auto v : vertices(quads))
+    PVF_FUZZ_CHECK(halfedge(v, quads) != boost::graph_traits<Mesh>::null_halfedge(), "an isolated quad vertex");
+  // a closed surface gets a closed quad mesh of its topology (holes of fold-overs filled,
+  // components split into quads included)
+  if(!trimmed && CGAL::is_closed(tm))
+    PVF_FUZZ_CHECK(CGAL::is_closed(quads) &&
+                     long(num_vertices(quads)) - long(num_edges(quads)) + long(num_faces(quads)) ==
+                       long(num_vertices(tm)) - long(num_edges(tm)) + long(num_faces(tm)),
+                   "the quads of a closed surface are not closed, or not of its Euler characteristic");
   // the trimmed polygons cover the surface: same Euler characteristic (cells that
   // go around a cylinder are cut into disks, FOUND_BUGS.md)
   if(trimmed)

@@ -23,6 +23,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #ifdef CGAL_PVF_QEX_DEBUG
@@ -72,14 +73,14 @@ Error_code repair_and_count_seams(Chart_mesh& M, bool given_transitions, std::si
   result.repaired_regions = fo.regions;
   result.repaired_vertices = fo.moved_vertices;
   result.repair_rings = fo.rings_used;
-  if(code != Error_code::SUCCESS)
+  if(code != Error_code::SUCCESS && code != Error_code::UNREPAIRABLE_FOLD_OVER)
     return code;
   if(fo.flipped_faces != 0)
   {
     // the repair keeps the transitions; check them again
-    code = transitions_and_fans(M, given_transitions, nullptr);
-    if(code != Error_code::SUCCESS)
-      return code;
+    const Error_code checked = transitions_and_fans(M, given_transitions, nullptr);
+    if(checked != Error_code::SUCCESS)
+      return checked;
   }
   {
     std::size_t seams = 0;
@@ -89,7 +90,7 @@ Error_code repair_and_count_seams(Chart_mesh& M, bool given_transitions, std::si
     result.seam_edges = seams;
   }
   result.degenerate_uv_edges = M.degenerate_uv_edges;
-  return Error_code::SUCCESS;
+  return code;  // UNREPAIRABLE_FOLD_OVER: what is left may still be cut out
 }
 
 // Integer points, their slots, and the check that every other interior vertex is regular.
@@ -213,18 +214,30 @@ Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, const 
   using CGAL::parameters::get_parameter;
   const bool trimmed = choose_parameter(get_parameter(np, internal_np::keep_trimmed_boundary), false);
   const std::size_t rings = choose_parameter(get_parameter(np, internal_np::fold_over_repair_rings), std::size_t(6));
+  const bool fill = choose_parameter(get_parameter(np, internal_np::fill_fold_overs), true);
   Error_code code = transitions_and_fans(M, given_transitions, &result.diagnostic);
   if(code != Error_code::SUCCESS)
     return code;
   result.time_setup = seconds(setup_start);
   auto t = Clock::now();
   code = repair_and_count_seams(M, given_transitions, rings, result);
-  if(code != Error_code::SUCCESS)
+  // what the repair leaves is cut out, and the holes in the quads are filled (whole cells only)
+  Fold_over_cut cut;
+  Chart_mesh S;
+  const bool cut_out = code == Error_code::UNREPAIRABLE_FOLD_OVER && fill && !trimmed && rings > 0 &&
+                       result.flipped_faces != 0 && cut_out_fold_overs(M, cut, S);
+  if(code != Error_code::SUCCESS && !cut_out)
     return code;
+  if(cut_out)
+  {
+    result.cut_faces = std::size_t(std::count(cut.removed.begin(), cut.removed.end(), char(1)));
+    result.diagnostic.clear();
+  }
+  const Chart_mesh& W = cut_out ? S : M;
   result.time_repair = seconds(t);
   t = Clock::now();
-  Extractor X(M, trimmed);
-  code = find_integer_points(M, X, result);
+  Extractor X(W, trimmed);
+  code = find_integer_points(W, X, result);
   if(code != Error_code::SUCCESS)
     return code;
   result.time_points = seconds(t);
@@ -241,7 +254,11 @@ Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, const 
   collect_cells(X, trimmed, cells, result);
   result.time_faces = seconds(t);
   t = Clock::now();
-  code = build_quad_mesh(M, X, cells, ends, rings > 0, quad_mesh, np_out, result);
+  const double tips = choose_parameter(get_parameter(np, internal_np::tip_snapping_distance), 0.3);
+  const bool split_small = choose_parameter(get_parameter(np, internal_np::split_components_without_cells), false);
+  const double max_distance = choose_parameter(get_parameter(np, internal_np::max_input_distance), 0.0);
+  code = build_quad_mesh(M, W, cut_out ? &cut : nullptr, X, cells, ends, 2 * rings, rings > 0, fill, split_small, tips,
+                         max_distance, quad_mesh, np_out, result);
   if(code != Error_code::SUCCESS)
     return code;
   result.time_output = seconds(t);

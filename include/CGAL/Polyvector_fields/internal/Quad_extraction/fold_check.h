@@ -58,14 +58,17 @@ inline bool is_folded_quad(const std::array<P3, 4>& q, const P3& n)
   return true;
 }
 
+// An AABB tree of triangles kept in a vector.
+typedef CGAL::AABB_tree<CGAL::AABB_traits<
+  Epick, CGAL::AABB_triangle_primitive<Epick, std::vector<Epick::Triangle_3>::const_iterator> > >
+  Triangle_tree;
+
 // The input surface near the quads: the faces of the chart mesh in an AABB tree.
 class Fold_check
 {
   typedef Epick::Point_3 Point;
   typedef Epick::Triangle_3 Triangle;
-  typedef std::vector<Triangle>::const_iterator Iterator;
-  typedef CGAL::AABB_triangle_primitive<Epick, Iterator> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive> > Tree;
+  typedef Triangle_tree Tree;
 
 public:
   explicit Fold_check(const Chart_mesh& M) : M_(M)
@@ -131,6 +134,7 @@ struct Fold_report
   std::size_t unfolded = 0;        // of which repaired
   std::size_t moved_vertices = 0;  // corners moved by the repair
   std::size_t first_folded = npos; // a quad still folded after the repair
+  std::vector<std::size_t> still_folded;  // every such quad
 };
 
 // quads[f]: the output vertices of quad f (empty: a face that is not checked); under[f]:
@@ -222,6 +226,7 @@ inline Fold_report unfold_quads(const Chart_mesh& M, const std::vector<std::vect
     {
       if(report.first_folded == npos)
         report.first_folded = f;
+      report.still_folded.push_back(f);
     }
     else
       ++report.unfolded;

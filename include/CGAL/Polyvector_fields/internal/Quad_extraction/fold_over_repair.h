@@ -519,6 +519,44 @@ inline bool repair_region(Chart_mesh& M, const std::vector<std::size_t>& region,
   return true;
 }
 
+// Adds to `mask` the faces around its vertices (one vertex ring).
+inline void grow_by_a_ring(const Chart_mesh& M, std::vector<char>& mask)
+{
+  std::vector<char> grown = mask;
+  for(std::size_t f = 0; f < M.F; ++f)
+    if(mask[f])
+      for(std::size_t k = 0; k < 3; ++k)
+        for(std::size_t c : M.fan[M.vertex[3 * f + k]])
+          grown[Chart_mesh::face(c)] = 1;
+  mask.swap(grown);
+}
+
+// The faces of `mask` in edge-connected regions, each from its smallest face outwards.
+inline std::vector<std::vector<std::size_t> > edge_connected_regions(const Chart_mesh& M, const std::vector<char>& mask)
+{
+  std::vector<std::vector<std::size_t> > regions;
+  std::vector<char> done(M.F, 0);
+  for(std::size_t f0 = 0; f0 < M.F; ++f0)
+  {
+    if(!mask[f0] || done[f0])
+      continue;
+    std::vector<std::size_t> region{ f0 };
+    done[f0] = 1;
+    for(std::size_t i = 0; i < region.size(); ++i)
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const std::size_t o = M.opp[3 * region[i] + k];
+        if(o != npos && mask[Chart_mesh::face(o)] && !done[Chart_mesh::face(o)])
+        {
+          done[Chart_mesh::face(o)] = 1;
+          region.push_back(Chart_mesh::face(o));
+        }
+      }
+    regions.push_back(region);
+  }
+  return regions;
+}
+
 inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_over_result& report)
 {
   report = Fold_over_result();
@@ -549,33 +587,9 @@ inline Error_code repair_fold_overs(Chart_mesh& M, std::size_t max_rings, Fold_o
     for(std::size_t f : bad)
       in_region[f] = 1;
     for(std::size_t r = 0; r < rings; ++r)
+      grow_by_a_ring(M, in_region);
+    for(const std::vector<std::size_t>& region : edge_connected_regions(M, in_region))
     {
-      std::vector<char> grown = in_region;
-      for(std::size_t f = 0; f < M.F; ++f)
-        if(in_region[f])
-          for(std::size_t k = 0; k < 3; ++k)
-            for(std::size_t c : M.fan[M.vertex[3 * f + k]])
-              grown[Chart_mesh::face(c)] = 1;
-      in_region.swap(grown);
-    }
-    // edge-connected components
-    std::vector<char> done(M.F, 0);
-    for(std::size_t f0 = 0; f0 < M.F; ++f0)
-    {
-      if(!in_region[f0] || done[f0])
-        continue;
-      std::vector<std::size_t> region{ f0 };
-      done[f0] = 1;
-      for(std::size_t i = 0; i < region.size(); ++i)
-        for(std::size_t k = 0; k < 3; ++k)
-        {
-          const std::size_t o = M.opp[3 * region[i] + k];
-          if(o != npos && in_region[Chart_mesh::face(o)] && !done[Chart_mesh::face(o)])
-          {
-            done[Chart_mesh::face(o)] = 1;
-            region.push_back(Chart_mesh::face(o));
-          }
-        }
       bool has_bad = false;
       for(std::size_t f : region)
         has_bad = has_bad || folded[f];

@@ -17,7 +17,9 @@
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Extractor.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_check.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_over_holes.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/split_wrapping_cells.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/tip_snapping.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/Exact_rational.h>
@@ -28,6 +30,7 @@
 #include <array>
 #include <algorithm>
 #include <cstddef>
+#include <numeric>
 #include <set>
 #include <string>
 #include <type_traits>
@@ -124,11 +127,22 @@ void collect_cells(const Extractor& X, bool trimmed, Cells& C, Report& result)
 
 // Builds the quad mesh (cleared first) from the cells, `ends` being the traces of the
 // iso-line slots; folded quads are repaired if `repair_folds`. `result` is a
-// Quad_extraction_result.
+// Quad_extraction_result. The cells were extracted from W: the surface M itself, or,
+// with `cut`, M without its fold-overs, whose holes are then filled (whole cells only),
+// the regions grown by up to `rings` rings; with `fill`, the quads still folded after
+// their repair are cut out and filled in the same way, and a component where they cannot
+// be filled gets its triangles split into quads; with `split_small`, so does a
+// component without a whole cell (unless every component is without), and with
+// `max_distance` > 0, a component whose input is farther than that from the quads. Input vertices farther than `tip_distance`
+// mean quad sides from the quads pull a corner onto themselves (0: none).
 template <typename PolygonMesh, typename NamedParametersOut, typename Report>
-Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells& C, const std::vector<Trace_end>& ends,
-                           bool repair_folds, PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result)
+Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_over_cut* cut, const Extractor& X,
+                           const Cells& C, const std::vector<Trace_end>& ends, std::size_t rings, bool repair_folds,
+                           bool fill, bool split_small, double tip_distance, double max_distance, PolygonMesh& quad_mesh,
+                           const NamedParametersOut& np_out, Report& result)
 {
+  // a face of W on the surface M
+  auto surface_face = [&](std::size_t w) { return cut ? cut->surface_face[w] : w; };
   // sector i at point P: between slots[i] (outgoing of a face corner) and slots[i+1]
   std::vector<std::vector<std::size_t> > sector_face(X.points.size());
   for(std::size_t p = 0; p < X.points.size(); ++p)
@@ -210,7 +224,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
     Q U[3][2];
     for(std::size_t k = 0; k < 3; ++k)
       for(int c = 0; c < 2; ++c)
-        U[k][c] = Q(M.corner_uv(f, k)[c]);
+        U[k][c] = Q(W.corner_uv(f, k)[c]);
     const Q qx(q[0]), qy(q[1]);
     auto det = [](const Q& ax, const Q& ay, const Q& bx, const Q& by, const Q& cx, const Q& cy) -> Q {
       return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
@@ -222,7 +236,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       const std::size_t k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       w[k] = det(qx, qy, U[k1][0], U[k1][1], U[k2][0], U[k2][1]) / area;
     }
-    const std::array<double, 3> PP[3] = { M.point[M.vertex[3 * f]], M.point[M.vertex[3 * f + 1]], M.point[M.vertex[3 * f + 2]] };
+    const std::array<double, 3> PP[3] = { W.point[W.vertex[3 * f]], W.point[W.vertex[3 * f + 1]], W.point[W.vertex[3 * f + 2]] };
     return lerp3(PP, w, 3);
   };
   std::vector<Out_point> positions;
@@ -232,7 +246,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
     const Qpoint& P = X.points[p];
     if(P.loc == AT_VERTEX)
     {
-      const auto& x = M.point[P.elem];
+      const auto& x = W.point[P.elem];
       positions.push_back(Out_point(x[0], x[1], x[2]));
     }
     else if(P.loc == ON_EDGE || P.loc == BOUNDARY_HIT)
@@ -245,56 +259,177 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
         lam = P.lambda;
       else
       {
-        const P2 &A = M.uv[a], &B = M.uv[b];
+        const P2 &A = W.uv[a], &B = W.uv[b];
         const int coord = A[0] != B[0] ? 0 : 1;
         lam = (Q(P.uv[coord]) - Q(A[coord])) / (Q(B[coord]) - Q(A[coord]));
       }
-      if(M.vertex[b] < M.vertex[a])
+      if(W.vertex[b] < W.vertex[a])
       {
         std::swap(a, b);
         lam = Q(1) - lam;
       }
-      const std::array<double, 3> PP[2] = { M.point[M.vertex[a]], M.point[M.vertex[b]] };
+      const std::array<double, 3> PP[2] = { W.point[W.vertex[a]], W.point[W.vertex[b]] };
       const Q w[2] = { Q(1) - lam, lam };
       positions.push_back(lerp3(PP, w, 2));
     }
     else
       positions.push_back(in_face(P.elem, P.uv));
   }
-  // Every connected component of the surface must get cells: one without is
+  std::vector<std::vector<std::size_t> > polygons;
+  std::vector<std::size_t> polygon_face;  // a surface face under each polygon
+  for(std::size_t f = 0; f < C.cells.size(); ++f)
+  {
+    std::vector<std::size_t> poly;
+    std::size_t face = npos;
+    for(std::size_t s : C.cells[f])
+    {
+      poly.push_back(corner_vertex_of_slot[s]);
+      if(face == npos && X.slots[s].face != npos && X.slots[s].face < W.F)
+        face = surface_face(X.slots[s].face);
+    }
+    polygons.push_back(poly);
+    polygon_face.push_back(face);
+  }
+  // the surface faces under each cell: the faces its sides were traced through
+  std::vector<std::vector<std::size_t> > under(C.cells.size());
+  for(std::size_t f = 0; f < C.cells.size(); ++f)
+  {
+    for(std::size_t s : C.cells[f])
+    {
+      if(s < ends.size())
+        for(std::size_t g : ends[s].faces)
+          under[f].push_back(surface_face(g));
+      if(X.slots[s].face < W.F)
+        under[f].push_back(surface_face(X.slots[s].face));
+    }
+    std::sort(under[f].begin(), under[f].end());
+    under[f].erase(std::unique(under[f].begin(), under[f].end()), under[f].end());
+  }
+  // polygons replaced by the filling of a hole (an island inside it)
+  std::vector<char> dropped(C.cells.size(), 0);
+  // Whole cells: the holes that fold-overs leave are filled, then or once the quads are
+  // checked (fill_holes() on the soup of the polygons made so far).
+  std::vector<Surface_location> location;
+  if(!X.trimmed_)
+  {
+    std::vector<std::size_t> same(cut ? 0 : W.F);
+    std::iota(same.begin(), same.end(), std::size_t(0));
+    for(std::size_t p : out_point)
+      location.push_back(surface_location(M, W, cut ? cut->surface_face : same, X.points[p]));
+  }
+  std::vector<std::size_t> uncovered;  // cut-out faces that the last filling could not cover
+  auto fill_holes = [&](const std::vector<char>& removed, std::size_t max_rings, std::string& why) {
+    Quad_soup soup;
+    for(const Out_point& x : positions)
+      soup.position.push_back({ CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()) });
+    soup.location = location;
+    soup.polygons = polygons;
+    soup.under = under;
+    soup.dropped = dropped;
+    Hole_fill_report fill;
+    const bool filled = fill_fold_over_holes(M, removed, max_rings, soup, fill);
+    result.filled_holes += fill.holes;
+    result.filling_quads += fill.quads;
+    result.replaced_quads += fill.replaced;
+    result.filling_rings = (std::max)(result.filling_rings, fill.rings);
+    why = fill.diagnostic;
+    uncovered = fill.uncovered_faces;
+    for(std::size_t v = positions.size(); v < soup.position.size(); ++v)
+      positions.push_back(Out_point(soup.position[v][0], soup.position[v][1], soup.position[v][2]));
+    for(std::size_t f = polygons.size(); f < soup.polygons.size(); ++f)
+      polygon_face.push_back(soup.under[f].empty() ? npos : soup.under[f][0]);
+    polygons.swap(soup.polygons);
+    under.swap(soup.under);
+    dropped.swap(soup.dropped);
+    location.swap(soup.location);
+    return filled;
+  };
+  std::vector<std::size_t> component, component_faces;
+  face_components(M, component, component_faces);
+  // A component whose holes cannot be filled gets its triangles split into quads, three
+  // each, around their centroids and through their edge midpoints (on the surface, its
+  // edges kept, never folded).
+  auto split_components = [&](const std::vector<std::size_t>& faces_in) {
+    std::vector<char> split(component_faces.size(), 0);
+    for(std::size_t t : faces_in)
+      split[component[t]] = 1;
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      if(polygon_face[f] != npos && split[component[polygon_face[f]]])
+        dropped[f] = 1;
+    auto add_point = [&](const P3& x, const Surface_location& L) {
+      positions.push_back(Out_point(x[0], x[1], x[2]));
+      location.push_back(L);
+      return positions.size() - 1;
+    };
+    std::vector<std::size_t> at_vertex(M.V, npos), at_edge(3 * M.F, npos);
+    for(std::size_t t = 0; t < M.F; ++t)
+    {
+      if(!split[component[t]])
+        continue;
+      std::size_t corner[3], middle[3];
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const std::size_t v = M.vertex[3 * t + k];
+        if(at_vertex[v] == npos)
+        {
+          Surface_location L;
+          L.n = 1;
+          L.v[0] = v;
+          L.w[0] = 1;
+          at_vertex[v] = add_point(M.point[v], L);
+        }
+        corner[k] = at_vertex[v];
+        const std::size_t e = 3 * t + k, canonical = M.opp[e] == npos ? e : (std::min)(e, M.opp[e]);
+        if(at_edge[canonical] == npos)
+        {
+          Surface_location L;
+          L.n = 2;
+          L.v = { M.vertex[e], M.vertex[Chart_mesh::next(e)], npos };
+          L.w = { 0.5, 0.5, 0 };
+          L.face = { t, M.opp[e] == npos ? npos : Chart_mesh::face(M.opp[e]) };
+          L.edge = e;
+          const P3 &a = M.point[L.v[0]], &b = M.point[L.v[1]];
+          at_edge[canonical] = add_point({ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) }, L);
+        }
+        middle[k] = at_edge[canonical];
+      }
+      Surface_location L;
+      L.n = 3;
+      P3 g{ 0, 0, 0 };
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        L.v[k] = M.vertex[3 * t + k];
+        L.w[k] = 1.0 / 3;
+        for(int a = 0; a < 3; ++a)
+          g[a] += M.point[L.v[k]][a] / 3;
+      }
+      L.face = { t, npos };
+      const std::size_t centre = add_point(g, L);
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        polygons.push_back({ corner[k], middle[k], centre, middle[(k + 2) % 3] });
+        under.push_back({ t });
+        dropped.push_back(0);
+        polygon_face.push_back(t);
+      }
+      ++result.split_triangles;
+    }
+    for(char s : split)
+      result.split_components += s;
+  };
+  if(cut)
+  {
+    std::string why;
+    if(!fill_holes(cut->removed, rings, why))
+      split_components(uncovered);
+  }
+  // Every connected component of the surface must get faces: one without is
   // smaller than a quad at the map's scale (or its map has no integer cell).
   {
-    std::vector<std::size_t> component(M.F, npos), component_faces, component_cells;
-    std::vector<std::size_t> stack;
-    for(std::size_t f0 = 0; f0 < M.F; ++f0)
-    {
-      if(component[f0] != npos)
-        continue;
-      const std::size_t k = component_faces.size();
-      component_faces.push_back(0);
-      component[f0] = k;
-      stack.assign(1, f0);
-      while(!stack.empty())
-      {
-        const std::size_t f = stack.back();
-        stack.pop_back();
-        ++component_faces[k];
-        for(std::size_t e = 3 * f; e < 3 * f + 3; ++e)
-          if(M.opp[e] != npos && component[Chart_mesh::face(M.opp[e])] == npos)
-          {
-            component[Chart_mesh::face(M.opp[e])] = k;
-            stack.push_back(Chart_mesh::face(M.opp[e]));
-          }
-      }
-    }
-    component_cells.assign(component_faces.size(), 0);
-    for(const std::vector<std::size_t>& cell : C.cells)
-      for(std::size_t s : cell)
-        if(X.slots[s].face != npos && X.slots[s].face < M.F)
-        {
-          ++component_cells[component[X.slots[s].face]];
-          break;
-        }
+    std::vector<std::size_t> component_cells(component_faces.size(), 0);
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      if(!dropped[f] && polygon_face[f] != npos)
+        ++component_cells[component[polygon_face[f]]];
     result.components = component_faces.size();
     std::size_t first_empty = npos;
     for(std::size_t k = 0; k < component_faces.size(); ++k)
@@ -304,6 +439,21 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
         if(first_empty == npos)
           first_empty = k;
       }
+    // with `split_small`, components without a cell (not all of them) are split into quads
+    if(first_empty != npos && split_small && !X.trimmed_ && result.components_without_cells < component_faces.size())
+    {
+      std::vector<std::size_t> faces_in;
+      for(std::size_t t = 0; t < M.F; ++t)
+        if(component_cells[component[t]] == 0)
+        {
+          faces_in.push_back(t);
+          component_cells[component[t]] = 1;
+        }
+      split_components(faces_in);
+      result.split_small_components = result.components_without_cells;
+      result.components_without_cells = 0;
+      first_empty = npos;
+    }
     if(first_empty != npos)
     {
       std::size_t face_of_first = 0;
@@ -319,24 +469,16 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       return Error_code::NO_INTEGER_CELL;
     }
   }
-  std::vector<std::vector<std::size_t> > polygons;
-  for(std::size_t f = 0; f < C.cells.size(); ++f)
-  {
-    std::vector<std::size_t> poly;
-    for(std::size_t s : C.cells[f])
-      poly.push_back(corner_vertex_of_slot[s]);
-    polygons.push_back(poly);
-  }
   // Trimmed cells that go around the surface (split_wrapping_cells.h): points inside
   // the iso-lines that would be loops or double edges, then diagonals; `changed`
   // cells are replaced by their pieces once the quads are checked.
-  std::vector<char> changed(C.cells.size(), 0);
+  std::vector<char> changed(polygons.size(), 0);
   std::vector<std::vector<std::size_t> > pieces;
   bool simple = true;
   if(X.trimmed_)
   {
     std::vector<Inner_point> inner;
-    const std::size_t failed = subdivide_wrapping_segments(M, X, C.cells, ends, positions.size(), polygons, inner, changed);
+    const std::size_t failed = subdivide_wrapping_segments(W, X, C.cells, ends, positions.size(), polygons, inner, changed);
     for(const Inner_point& p : inner)
       positions.push_back(in_face(p.face, p.uv));
     std::set<std::pair<std::size_t, std::size_t> > edges;
@@ -360,10 +502,11 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
       result.split_cells += changed[f];
     result.added_vertices = inner.size();
   }
-  for(std::size_t f = 0; f < C.cells.size(); ++f)
-    if(changed[f])
+  auto boundary_piece = [&](std::size_t f) { return f < C.cells.size() && C.has_boundary_piece[f]; };
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    if(changed[f] || dropped[f])
       continue;
-    else if(polygons[f].size() == 4 && !C.has_boundary_piece[f])
+    else if(polygons[f].size() == 4 && !boundary_piece(f))
       ++result.quads;
     else
       ++result.trimmed_polygons;
@@ -372,30 +515,98 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
   // traced through, and the face nearest to its centroid); the folded ones are repaired
   // by moving their corners on the surface, or the extraction fails.
   {
-    std::vector<std::vector<std::size_t> > quads(C.cells.size()), under(C.cells.size());
-    for(std::size_t f = 0; f < C.cells.size(); ++f)
-    {
-      // (a cell that passes twice through a vertex is refused below: NON_DISK_CELL)
-      if(polygons[f].size() != 4 || C.has_boundary_piece[f] || changed[f] || has_repeated_vertex(polygons[f]))
-        continue;
-      quads[f] = polygons[f];
-      for(std::size_t s : C.cells[f])
+    std::vector<std::vector<std::size_t> > quads;
+    std::vector<P3> pos;
+    auto check_quads = [&]() {
+      quads.assign(polygons.size(), {});
+      for(std::size_t f = 0; f < polygons.size(); ++f)
       {
-        if(s < ends.size())
-          under[f].insert(under[f].end(), ends[s].faces.begin(), ends[s].faces.end());
-        if(X.slots[s].face < M.F)
-          under[f].push_back(X.slots[s].face);
+        // (a cell that passes twice through a vertex is refused below: NON_DISK_CELL)
+        if(polygons[f].size() != 4 || boundary_piece(f) || changed[f] || dropped[f] || has_repeated_vertex(polygons[f]))
+          continue;
+        quads[f] = polygons[f];
       }
-      std::sort(under[f].begin(), under[f].end());
-      under[f].erase(std::unique(under[f].begin(), under[f].end()), under[f].end());
-    }
-    std::vector<P3> pos(positions.size());
-    for(std::size_t v = 0; v < positions.size(); ++v)
-      pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
-    const Fold_report fold = unfold_quads(M, quads, under, pos, repair_folds);
+      pos.resize(positions.size());
+      for(std::size_t v = 0; v < positions.size(); ++v)
+        pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+      const Fold_report report = unfold_quads(M, quads, under, pos, repair_folds);
+      std::vector<std::vector<std::size_t> > corner_quads(positions.size());
+      for(std::size_t f = 0; f < quads.size(); ++f)
+        for(std::size_t v : quads[f])
+          corner_quads[v].push_back(f);
+      for(std::size_t v = 0; v < positions.size(); ++v)
+      {
+        const P3 before{ CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()),
+                         CGAL::to_double(positions[v].z()) };
+        if(before == pos[v])
+          continue;
+        positions[v] = Out_point(pos[v][0], pos[v][1], pos[v][2]);
+        // where the repair moved the corner: a vertex or an edge midpoint of a face under its quads
+        if(location.empty())
+          continue;
+        for(std::size_t f : corner_quads[v])
+          for(std::size_t t : under[f])
+            for(std::size_t k = 0; k < 3; ++k)
+            {
+              const std::size_t e = 3 * t + k, a = M.vertex[e], b = M.vertex[Chart_mesh::next(e)];
+              const P3 middle{ 0.5 * (M.point[a][0] + M.point[b][0]), 0.5 * (M.point[a][1] + M.point[b][1]),
+                               0.5 * (M.point[a][2] + M.point[b][2]) };
+              Surface_location L;
+              if(M.point[a] == pos[v])
+              {
+                L.n = 1;
+                L.v[0] = a;
+                L.w[0] = 1;
+              }
+              else if(middle == pos[v])
+              {
+                L.n = 2;
+                L.v = { a, b, npos };
+                L.w = { 0.5, 0.5, 0 };
+                L.face = { t, M.opp[e] == npos ? npos : Chart_mesh::face(M.opp[e]) };
+                L.edge = e;
+              }
+              else
+                continue;
+              location[v] = L;
+            }
+      }
+      return report;
+    };
+    Fold_report fold = check_quads();
     result.folded_quads = fold.folded - fold.unfolded;
     result.unfolded_quads = fold.unfolded;
     result.moved_quad_vertices = fold.moved_vertices;
+    if(result.folded_quads != 0 && fill && !X.trimmed_ && repair_folds)
+    {
+      // the quads still folded, and those that share a corner with them, are cut out, and
+      // the faces under the folded ones filled as the holes of fold-overs are
+      std::vector<char> removed(M.F, 0);
+      std::vector<std::vector<std::size_t> > corner_quads(positions.size());
+      for(std::size_t f = 0; f < quads.size(); ++f)
+        for(std::size_t v : quads[f])
+          corner_quads[v].push_back(f);
+      for(std::size_t f : fold.still_folded)
+      {
+        for(std::size_t t : under[f])
+          removed[t] = 1;
+        for(std::size_t v : quads[f])
+          for(std::size_t g : corner_quads[v])
+            dropped[g] = 1;
+      }
+      std::string why;
+      if(!fill_holes(removed, rings, why))
+        split_components(uncovered);
+      {
+        changed.resize(polygons.size(), 0);
+        const Fold_report again = check_quads();
+        result.refilled_quads = fold.still_folded.size();
+        result.folded_quads = again.folded - again.unfolded;
+        result.unfolded_quads += again.unfolded;
+        result.moved_quad_vertices += again.moved_vertices;
+        fold = again;
+      }
+    }
     if(result.folded_quads != 0)
     {
       P3 centre{ 0, 0, 0 };
@@ -404,20 +615,58 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
           centre[a] += 0.25 * pos[v][a];
       result.diagnostic = std::to_string(result.folded_quads) + " of the " + std::to_string(polygons.size()) +
                           " quads fold against the surface (neither diagonal gives two triangles on the side of the input "
-                          "faces under the quad), " + std::to_string(fold.unfolded) + " others were repaired; the first one near (" +
+                          "faces under the quad), " + std::to_string(result.unfolded_quads) + " others were repaired; the first one near (" +
                           std::to_string(centre[0]) + ", " + std::to_string(centre[1]) + ", " + std::to_string(centre[2]) +
                           "): the surface bends by more than a right angle under one quad there";
       return Error_code::FOLDED_QUAD;
+    }
+    // input vertices far from the quads (tips finer than the quads) pull a corner onto themselves
+    {
+      double mean_side = 0;
+      std::size_t sides = 0;
+      for(const auto& q : quads)
+        for(std::size_t k = 0; k < q.size(); ++k)
+        {
+          const P3 d = sub3(pos[q[(k + 1) % q.size()]], pos[q[k]]);
+          mean_side += std::sqrt(dot3(d, d));
+          ++sides;
+        }
+      mean_side = sides > 0 ? mean_side / double(sides) : 0;
+      result.snapped_tips = snap_to_tips(M, quads, under, pos, tip_distance * mean_side, repair_folds && tip_distance > 0 && !X.trimmed_).snapped;
     }
     for(std::size_t v = 0; v < positions.size(); ++v)
       if(pos[v][0] != CGAL::to_double(positions[v].x()) || pos[v][1] != CGAL::to_double(positions[v].y()) ||
          pos[v][2] != CGAL::to_double(positions[v].z()))
         positions[v] = Out_point(pos[v][0], pos[v][1], pos[v][2]);
+    // how far the input is from the quads; with `max_distance`, a component farther is split into quads
+    std::vector<double> far = input_distances(M, quads, pos, component, component_faces.size());
+    if(max_distance > 0 && !X.trimmed_ && *std::max_element(far.begin(), far.end()) > max_distance)
+    {
+      std::vector<std::size_t> faces_in;
+      for(std::size_t t = 0; t < M.F; ++t)
+        if(far[component[t]] > max_distance)
+        {
+          faces_in.push_back(t);
+          far[component[t]] = 0;
+          ++result.split_far_components;
+        }
+      split_components(faces_in);
+      changed.resize(polygons.size(), 0);
+      std::vector<std::vector<std::size_t> > now(polygons.size());
+      for(std::size_t f = 0; f < polygons.size(); ++f)
+        if(polygons[f].size() == 4 && !boundary_piece(f) && !changed[f] && !dropped[f])
+          now[f] = polygons[f];
+      pos.resize(positions.size());
+      for(std::size_t v = 0; v < positions.size(); ++v)
+        pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+      far = input_distances(M, now, pos, component, component_faces.size());
+    }
+    result.largest_input_distance = far.empty() ? 0 : *std::max_element(far.begin(), far.end());
   }
   {
     std::size_t kept = 0;
     for(std::size_t f = 0; f < polygons.size(); ++f)
-      if(!changed[f])
+      if(!changed[f] && !dropped[f])
         polygons[kept++].swap(polygons[f]);
     polygons.resize(kept);
     polygons.insert(polygons.end(), pieces.begin(), pieces.end());
@@ -499,6 +748,24 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Extractor& X, const Cells&
                           "larger than that part of the surface";
       return Error_code::NON_DISK_CELL;
     }
+  }
+  if(!X.trimmed_)
+    result.quads = polygons.size();  // with the fillings and the splits
+  // the points of no polygon (those of the polygons that a filling or a split replaced) go
+  {
+    std::vector<std::size_t> index(positions.size(), npos);
+    std::vector<Out_point> kept;
+    for(std::vector<std::size_t>& poly : polygons)
+      for(std::size_t& v : poly)
+      {
+        if(index[v] == npos)
+        {
+          index[v] = kept.size();
+          kept.push_back(positions[v]);
+        }
+        v = index[v];
+      }
+    positions.swap(kept);
   }
   clear_output(quad_mesh);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(positions, polygons, quad_mesh, CGAL::parameters::default_values(), np_out);

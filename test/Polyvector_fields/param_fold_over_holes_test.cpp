@@ -8,7 +8,7 @@
 // Tests of the quads that fill a polygon (with holes), of the fold-overs cut out of a
 // map and filled, and of the tips that pull quad corners (issue 21). The properties
 // are measured here from the outputs: areas, sides, Euler characteristics and
-// distances written out in this file. Everything but the tests is in an anonymous
+// distances written out in this file, and the check of each component's quads. Everything but the tests is in an anonymous
 // namespace with Holes names, and the suites are named Holes*.
 
 #include "test_meshes.h"
@@ -22,7 +22,10 @@
 #include <CGAL/random_polygon_2.h>
 
 #include <CGAL/Polyvector_fields/extract_quad_mesh.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/component_check.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_over_holes.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/polygon_quadrangulation.h>
+#include <CGAL/property_map.h>
 
 #include <gtest/gtest.h>
 
@@ -222,6 +225,17 @@ double holes_area(const Mesh& m)
   return a;
 }
 
+// The quads of a cube on points first..first+7, outward.
+std::vector<std::vector<std::size_t> > holes_cube_quads(std::size_t first)
+{
+  const std::size_t q[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                                { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  std::vector<std::vector<std::size_t> > out;
+  for(const auto& f : q)
+    out.push_back({ first + f[0], first + f[1], first + f[2], first + f[3] });
+  return out;
+}
+
 } // namespace
 
 // Random simple polygons, star-shaped and general (CGAL's random_polygon_2), with an even
@@ -296,6 +310,81 @@ TEST(HolesQuadrangulation, RefusesWhatIsNotADomain)
   const Holes_loop outside{ { 3, 0 }, { 3, 1 }, { 4, 1 }, { 4, 0 } };  // clockwise, but not inside
   EXPECT_FALSE(QX::quadrangulate_domain({ square, outside }, 0.25, out));
   EXPECT_FALSE(QX::quadrangulate_polygon(square, 0, out));
+}
+
+// Each component's quads are checked on their own: a cube on a tetrahedron passes,
+// a torus grid (Euler characteristic 0), an open quad, two cubes apart, two cubes
+// joined at a corner and a quad through a point twice do not, each for its cause; an
+// open component takes any one piece; a polygon on no face joins the component of the
+// quads it shares points with; a skipped polygon is not looked at.
+TEST(HolesComponents, EachComponentIsOneQuadMeshOfIt)
+{
+  Mesh tm;
+  for(int k = 0; k < 6; ++k)
+    CGAL::make_tetrahedron(Point(3 * k, 0, 0), Point(3 * k + 1, 0, 0), Point(3 * k, 1, 0), Point(3 * k, 0, 1), tm);
+  {
+    const auto a = tm.add_vertex(Point(0, 5, 0)), b = tm.add_vertex(Point(1, 5, 0)), c = tm.add_vertex(Point(1, 6, 0)),
+               d = tm.add_vertex(Point(0, 6, 0));
+    tm.add_face(a, b, c);
+    tm.add_face(a, c, d);
+  }
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+  QX::Chart_mesh M;
+  const CGAL::Constant_property_map<Mesh::Halfedge_index, std::array<double, 2> > zero({ 0.0, 0.0 });
+  ASSERT_EQ(QX::build_chart_mesh(tm, get(CGAL::vertex_point, tm), zero, M), PVF::Error_code::SUCCESS);
+  std::vector<std::size_t> component, sizes;
+  QX::face_components(M, component, sizes);
+  ASSERT_EQ(sizes.size(), 7u);
+  // tetrahedron k has faces 4k..4k+3, the square 24 and 25
+  std::vector<std::vector<std::size_t> > polygons;
+  std::vector<std::size_t> face;
+  std::vector<char> skip;
+  auto add = [&](const std::vector<std::vector<std::size_t> >& polys, std::size_t f, char skipped = 0) {
+    for(const auto& p : polys)
+    {
+      polygons.push_back(p);
+      face.push_back(f);
+      skip.push_back(skipped);
+    }
+  };
+  add(holes_cube_quads(0), 0);
+  face.back() = PVF::internal::npos;  // joins tetrahedron 0 through its points
+  add({ { 0, 1, 2, 3 } }, 0, 1);  // skipped: it would make edges used three times
+  std::vector<std::vector<std::size_t> > torus;
+  for(std::size_t j = 0; j < 4; ++j)
+    for(std::size_t i = 0; i < 4; ++i)
+      torus.push_back({ 100 + i + 4 * j, 100 + (i + 1) % 4 + 4 * j, 100 + (i + 1) % 4 + 4 * ((j + 1) % 4),
+                        100 + i + 4 * ((j + 1) % 4) });
+  add(torus, 4);
+  add({ { 200, 201, 202, 203 } }, 8);
+  add(holes_cube_quads(300), 12);
+  add(holes_cube_quads(310), 12);
+  std::vector<std::vector<std::size_t> > pinched = holes_cube_quads(400), second = holes_cube_quads(407);
+  pinched.insert(pinched.end(), second.begin(), second.end());  // point 407 in both cubes
+  add(pinched, 16);
+  add({ { 500, 501, 502, 501 } }, 20);
+  add({ { 600, 601, 602, 603 }, { 601, 604, 605, 602 } }, 24);  // a 2x1 patch on the open square
+  std::vector<std::size_t> polygon_face = face;
+  const std::vector<QX::Component_defect> defects =
+    QX::defective_components(M, component, sizes.size(), polygons, polygon_face, skip);
+  std::map<std::size_t, std::string> why;  // by tetrahedron
+  for(const QX::Component_defect& d : defects)
+  {
+    EXPECT_EQ(component[d.face], d.component);
+    for(std::size_t k = 0; k < 7; ++k)
+      if(component[4 * k] == d.component)
+        why[k] = d.why;
+  }
+  EXPECT_EQ(why.size(), 5u);
+  EXPECT_EQ(why.count(0), 0u) << why[0];
+  EXPECT_NE(why[1].find("Euler characteristic 0, the component 2"), std::string::npos) << why[1];
+  EXPECT_NE(why[2].find("leave a hole (4 border edges)"), std::string::npos) << why[2];
+  EXPECT_NE(why[3].find("fall into 2 pieces"), std::string::npos) << why[3];
+  EXPECT_NE(why[4].find("do not form a polygon mesh"), std::string::npos) << why[4];
+  EXPECT_NE(why[5].find("passes twice through a point"), std::string::npos) << why[5];
+  EXPECT_EQ(why.count(6), 0u) << why[6];
+  // the polygon on no face got one of tetrahedron 0
+  EXPECT_EQ(component[polygon_face[5]], component[0]);
 }
 
 // The map of the decimated knight (1000 faces of a scan, refined to 2634; the map of

@@ -50,7 +50,8 @@ struct Quad_extraction_result
   std::size_t refilled_quads = 0;         ///< quads still folded after their repair, cut out with the quads around them and filled
   std::size_t split_components = 0;       ///< connected components whose fold-overs could not be filled: their triangles are split into quads
   std::size_t split_small_components = 0; ///< of which components without a whole cell, with `split_components_without_cells`
-  std::size_t split_far_components = 0;  ///< of which components farther than `max_input_distance` from their quads
+  std::size_t split_far_components = 0;   ///< of which components farther than `max_input_distance` from their quads
+  std::size_t split_defective_components = 0; ///< of which components whose quads were not one quad mesh of them, with `split_components_without_cells` (see <b>Components</b>)
   std::size_t split_triangles = 0;        ///< the triangles so split (three quads each, counted in `quads`)
   std::size_t cut_faces = 0;              ///< triangles cut out of the map around those fold-overs
   std::size_t seam_edges = 0;             ///< interior edges with a non-identity transition
@@ -189,7 +190,12 @@ struct Quad_extraction_result
 /// <b>Components.</b> Each connected component of `tm` gets its own quads. One where the map has
 /// no whole cell (smaller than a quad) makes the call fail with `NO_INTEGER_CELL`, or, with
 /// `split_components_without_cells`, gets its triangles split into quads as above (unless no
-/// component has a cell).
+/// component has a cell). The quads of each component are then checked: they form one polygon
+/// mesh, in one piece, and on a closed component they are closed and have its Euler
+/// characteristic. A component whose quads fail (the quad size is too large for a thin part of
+/// it) makes the call fail with `NON_DISK_CELL`, naming the component and the cause, or, with
+/// `split_components_without_cells`, gets its triangles split into quads
+/// (`result.split_defective_components`; unless every component fails).
 ///
 /// All computations are done in `double` (and exact rationals where stated),
 /// whatever the kernels of `tm` and `quad_mesh`.
@@ -237,8 +243,9 @@ struct Quad_extraction_result
 ///     \cgalParamDefault{0.3}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{split_components_without_cells}
-///     \cgalParamDescription{split the triangles of a connected component without a whole cell into quads
-///                           instead of failing (see <b>Components</b>); given with
+///     \cgalParamDescription{split the triangles of a connected component without a whole cell, or whose
+///                           quads are not one quad mesh of it, into quads instead of failing (see
+///                           <b>Components</b>); given with
 ///                           `Polyvector_fields::parameters::split_components_without_cells()`}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}

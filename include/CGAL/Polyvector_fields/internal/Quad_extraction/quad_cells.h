@@ -15,6 +15,7 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
+#include <CGAL/Polyvector_fields/internal/Quad_extraction/component_check.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Extractor.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_check.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_over_holes.h>
@@ -517,18 +518,20 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
   {
     std::vector<std::vector<std::size_t> > quads;
     std::vector<P3> pos;
-    auto check_quads = [&]() {
-      quads.assign(polygons.size(), {});
+    // `out`: the polygons kept so far that are quads (a cell that passes twice through a
+    // vertex is refused below: NON_DISK_CELL), and `pos` their points in double
+    auto kept_quads = [&](std::vector<std::vector<std::size_t> >& out) {
+      changed.resize(polygons.size(), 0);
+      out.assign(polygons.size(), {});
       for(std::size_t f = 0; f < polygons.size(); ++f)
-      {
-        // (a cell that passes twice through a vertex is refused below: NON_DISK_CELL)
-        if(polygons[f].size() != 4 || boundary_piece(f) || changed[f] || dropped[f] || has_repeated_vertex(polygons[f]))
-          continue;
-        quads[f] = polygons[f];
-      }
+        if(polygons[f].size() == 4 && !boundary_piece(f) && !changed[f] && !dropped[f] && !has_repeated_vertex(polygons[f]))
+          out[f] = polygons[f];
       pos.resize(positions.size());
       for(std::size_t v = 0; v < positions.size(); ++v)
         pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+    };
+    auto check_quads = [&]() {
+      kept_quads(quads);
       const Fold_report report = unfold_quads(M, quads, under, pos, repair_folds);
       std::vector<std::vector<std::size_t> > corner_quads(positions.size());
       for(std::size_t f = 0; f < quads.size(); ++f)
@@ -598,7 +601,6 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
       if(!fill_holes(removed, rings, why))
         split_components(uncovered);
       {
-        changed.resize(polygons.size(), 0);
         const Fold_report again = check_quads();
         result.refilled_quads = fold.still_folded.size();
         result.folded_quads = again.folded - again.unfolded;
@@ -619,6 +621,38 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
                           std::to_string(centre[0]) + ", " + std::to_string(centre[1]) + ", " + std::to_string(centre[2]) +
                           "): the surface bends by more than a right angle under one quad there";
       return Error_code::FOLDED_QUAD;
+    }
+    // Each component's quads are checked (component_check.h): one polygon mesh, in one
+    // piece, and on a closed component closed with its Euler characteristic. With
+    // `split_small`, a component that fails gets its triangles split into quads.
+    if(!X.trimmed_)
+    {
+      std::vector<char> skip(polygons.size(), 0);
+      for(std::size_t f = 0; f < polygons.size(); ++f)
+        skip[f] = (f < changed.size() && changed[f]) || dropped[f];
+      const std::vector<Component_defect> defects =
+        defective_components(M, component, component_faces.size(), polygons, polygon_face, skip);
+      if(!defects.empty() && !(split_small && defects.size() < component_faces.size()))
+      {
+        const Component_defect& d = defects.front();
+        result.diagnostic =
+          (component_faces.size() == 1 ? std::string("the quads of the surface:") :
+                                         std::to_string(defects.size()) + " of the " + std::to_string(component_faces.size()) +
+                                           " components are not each one quad mesh, the first one (" +
+                                           std::to_string(component_faces[d.component]) + " faces, face " +
+                                           std::to_string(d.face) + "):") +
+          " " + d.why + ": the quad size is larger than that part of the surface";
+        return Error_code::NON_DISK_CELL;
+      }
+      if(!defects.empty())
+      {
+        std::vector<std::size_t> faces_in;
+        for(const Component_defect& d : defects)
+          faces_in.push_back(d.face);
+        split_components(faces_in);
+        result.split_defective_components = defects.size();
+        kept_quads(quads);
+      }
     }
     // input vertices far from the quads (tips finer than the quads) pull a corner onto themselves
     {
@@ -651,14 +685,8 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
           ++result.split_far_components;
         }
       split_components(faces_in);
-      changed.resize(polygons.size(), 0);
-      std::vector<std::vector<std::size_t> > now(polygons.size());
-      for(std::size_t f = 0; f < polygons.size(); ++f)
-        if(polygons[f].size() == 4 && !boundary_piece(f) && !changed[f] && !dropped[f])
-          now[f] = polygons[f];
-      pos.resize(positions.size());
-      for(std::size_t v = 0; v < positions.size(); ++v)
-        pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
+      std::vector<std::vector<std::size_t> > now;
+      kept_quads(now);
       far = input_distances(M, now, pos, component, component_faces.size());
     }
     result.largest_input_distance = far.empty() ? 0 : *std::max_element(far.begin(), far.end());

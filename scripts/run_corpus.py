@@ -37,7 +37,10 @@ the checker's bars --min-area-ratio 0.98 and --max-hausdorff 0.01. With
 --planarize among the options, quad vertices may lie 5% of the mean quad edge
 off the surface (otherwise 1e-6 of the bounding-box diagonal). --sharp-edges D
 is given to both the pipeline and the checker, which then measures the part of
-the input's edges sharper than D degrees that lies on quad edges.
+the input's edges sharper than D degrees that lies on quad edges: within 1% of
+the mean quad edge, and "traced" (within 1%, or between the ends of a quad edge
+whose two ends are on the sharp edges and within a quarter of its length: the
+chords of a curved crease; see check_quad_mesh).
 
 Example (the command of issue 21):
   scripts/run_corpus.py --jobs 2 --options "--curvature-constraints 1" ../shared/data/corpus
@@ -306,7 +309,7 @@ def cell(text, limit=160):
 
 def print_table(results):
     print("| mesh | faces | status | reason | seconds | quads | irregular vertices | area ratio | "
-          "Hausdorff/diag | sharp-edge coverage (and boundary) |")
+          "Hausdorff/diag | sharp-edge coverage, traced (and boundary) |")
     print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|")
     for r in results:
         c = r["check"]
@@ -319,11 +322,15 @@ def print_table(results):
             coverage = "no sharp edge"
         elif coverage not in ("", "-"):
             coverage = "%.1f%% of %s edges" % (100 * float(coverage), c.get("sharp_edges", "?"))
+            if c.get("sharp_traced", "-") != "-":
+                coverage += ", traced %.1f%%" % (100 * float(c["sharp_traced"]))
         elif coverage == "-":
             coverage = ""
         if c.get("boundary_edges", "0") != "0":
             coverage += ("; " if coverage else "") + "boundary %.1f%% of %s edges" % (
                 100 * float(c.get("boundary_coverage", "nan")), c["boundary_edges"])
+            if "boundary_traced" in c:
+                coverage += ", traced %.1f%%" % (100 * float(c["boundary_traced"]))
         print("| %s | %s | %s | %s | %.1f | %s | %s | %s | %s | %s |" % (
             cell(os.path.basename(r["mesh"])), "" if r["faces"] is None else r["faces"],
             "**%s**" % r["status"] if r["status"] not in ("ok", "refused") else r["status"],

@@ -238,6 +238,77 @@ TEST(CliSupportSharpEdges, FandiskFeatureLines)
     EXPECT_EQ(on_poly[i].vectors.size(), constraints[i].vectors.size());
 }
 
+// A roof: a crease C0 C1 C2 (two edges of length 2 * scale, at z = scale)
+// that turns by `turn_degrees` at C1, with planar sides going down at 45
+// degrees to z = 0 (the crease's dihedral angle is 90 degrees; the two side
+// pieces of one side meet at an angle of acos((cos turn + 1) / 2): 21 degrees
+// for a turn of 30, 41 for 60).
+Mesh bent_roof(double turn_degrees, double scale)
+{
+  const double t = turn_degrees * CGAL_PI / 180, half = t / 2;
+  const Vector d0(1, 0, 0), d1(std::cos(t), std::sin(t), 0);
+  const Vector n0(0, 1, 0), n1(-std::sin(t), std::cos(t), 0);  // to the left of each edge
+  const Vector bisector = (n0 + n1) / (2 * std::cos(half) * std::cos(half));  // distance 1 to both lines
+  const Vector down(0, 0, -1);
+  const Point c0(0, 0, 1), c1 = c0 + 2 * d0, c2 = c1 + 2 * d1;
+  std::vector<Point> points = { c0, c1, c2, c0 + n0 + down, c1 + bisector + down, c2 + n1 + down,
+                                c0 - n0 + down, c1 - bisector + down, c2 - n1 + down };
+  for(Point& p : points)
+    p = Point(scale * p.x(), scale * p.y(), scale * p.z());
+  // crease 0 1 2, left 3 4 5, right 6 7 8; counter-clockwise seen from above
+  const std::vector<std::vector<std::size_t> > triangles = { { 0, 1, 4 }, { 0, 4, 3 }, { 1, 2, 5 }, { 1, 5, 4 },
+                                                             { 0, 6, 7 }, { 0, 7, 1 }, { 1, 7, 8 }, { 1, 8, 2 } };
+  Mesh tm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tm);
+  return tm;
+}
+
+// The sharp edges kept with minimum_feature_length(length), above `degrees`
+// (the roof's crease at 50: its side pieces meet at less); `constraints`
+// receives the constraints.
+std::size_t kept_crease_edges(const Mesh& tm, double length, double degrees = 50,
+                              std::vector<Constraint>* constraints = nullptr)
+{
+  std::map<Mesh::Edge_index, bool> flags;
+  std::vector<Constraint> local;
+  EXPECT_EQ(PVF::select_sharp_edge_constraints(
+              tm, degrees, 2, constraints ? *constraints : local,
+              PVF::parameters::minimum_feature_length(length).edge_is_constrained_map(
+                boost::make_assoc_property_map(flags))),
+            PVF::Error_code::SUCCESS);
+  std::size_t kept = 0;
+  for(const auto& flag : flags)
+    kept += flag.second ? 1 : 0;
+  return kept;
+}
+
+TEST(CliSupportSharpEdges, ShortCreasesAreDropped)
+{
+  // A crease that turns by 30 degrees is one curve of length 4: kept below
+  // 4, dropped above (its network is shorter too).
+  const Mesh gentle = bent_roof(30, 1);
+  EXPECT_EQ(kept_crease_edges(gentle, 0), 2u);
+  EXPECT_EQ(kept_crease_edges(gentle, 3), 2u);
+  EXPECT_EQ(kept_crease_edges(gentle, 5), 0u);
+  // Turning by 60 degrees (more than 45), it is two curves of length 2 with
+  // free ends, each shorter than 3: dropped, though their network is 4 long.
+  const Mesh sharp_turn = bent_roof(60, 1);
+  EXPECT_EQ(kept_crease_edges(sharp_turn, 0), 2u);
+  EXPECT_EQ(kept_crease_edges(sharp_turn, 3), 0u);
+  EXPECT_EQ(kept_crease_edges(sharp_turn, 1.9), 2u);
+  // Lengths are in mesh units, whatever the size of the coordinates.
+  const double small = 1.0 / 64;
+  const Mesh tiny = bent_roof(30, small);
+  EXPECT_EQ(kept_crease_edges(tiny, 3 * small), 2u);
+  EXPECT_EQ(kept_crease_edges(tiny, 4.1 * small), 0u);
+  EXPECT_EQ(kept_crease_edges(tiny, 3.9 * small), 2u);
+  // The edges of a box are curves of length 1 between corners where three
+  // of them meet: kept whatever the length asked for.
+  std::vector<Constraint> constraints;
+  EXPECT_EQ(kept_crease_edges(box(1, 1, 1), 3, 30, &constraints), 12u);
+  EXPECT_EQ(constraints.size(), 12u);
+}
+
 TEST(CliSupportSharpEdges, RefusesBadParameters)
 {
   const Mesh tm = box(1, 1, 1);

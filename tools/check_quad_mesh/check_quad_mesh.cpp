@@ -883,35 +883,80 @@ int main(int argc, char** argv)
               hausdorff <= options.max_hausdorff, "bar <= " + format(options.max_hausdorff));
 
   // --- sharp edges and boundary edges on quad edges -------------------------------
-  // Each input edge is sampled at 5 interior points; a sample is covered when
-  // a quad edge (a segment) passes within 1% of the mean quad edge length.
+  // Each input edge is sampled at 5 interior points. A sample is *covered*
+  // when a quad edge (a segment) passes within 1% of the mean quad edge length
+  // of it. It is *traced* when it is covered, or when it lies between the two
+  // ends of a quad edge whose ends are both on the selected input edges
+  // (within that 1%) and is within a quarter of that quad edge's length of it:
+  // a curved crease followed by quad edges, each a chord of the crease, off it
+  // by its sagitta. The next parallel iso-line is a whole quad away, so a
+  // quarter of a quad edge does not count a crease that the quads cross or run
+  // beside. The largest sagitta of the traced samples is reported too.
   std::vector<Segment> quad_edges;
+  std::vector<std::pair<std::size_t, std::size_t> > quad_edge_ends;
   for(const Soup_edge& e : topo.edges)
-    if(is_finite(points[e.a]) && is_finite(points[e.b]) && points[e.a] != points[e.b])
+    if(is_finite(points[e.a]) && is_finite(points[e.b]) && points[e.a] != points[e.b]) {
       quad_edges.emplace_back(points[e.a], points[e.b]);
+      quad_edge_ends.emplace_back(e.a, e.b);
+    }
   Segment_tree edge_tree(quad_edges.cbegin(), quad_edges.cend());
   if(!quad_edges.empty())
     edge_tree.accelerate_distance_queries();
   const double coverage_tolerance = 0.01 * mean_edge;
   struct Coverage {
-    std::size_t edges = 0, samples = 0, covered = 0, edges_covered = 0;
+    std::size_t edges = 0, samples = 0, covered = 0, edges_covered = 0, traced = 0;
+    double largest_sagitta = 0;  // of the traced samples, over the mean quad edge
     double fraction() const { return samples > 0 ? double(covered) / double(samples) : 1.0; }
+    double traced_fraction() const { return samples > 0 ? double(traced) / double(samples) : 1.0; }
   };
   auto coverage_of = [&](auto&& selected) {
     Coverage c;
     const int samples_per_edge = 5;
-    for(edge_descriptor e : edges(ref.mesh)) {
-      if(!selected(e))
-        continue;
+    std::vector<Segment> input_edges;
+    for(edge_descriptor e : edges(ref.mesh))
+      if(selected(e))
+        input_edges.emplace_back(ref.mesh.point(source(halfedge(e, ref.mesh), ref.mesh)),
+                                 ref.mesh.point(target(halfedge(e, ref.mesh), ref.mesh)));
+    if(input_edges.empty())
+      return c;
+    // the quad edges whose two ends are on the selected input edges
+    Segment_tree input_tree(input_edges.cbegin(), input_edges.cend());
+    input_tree.accelerate_distance_queries();
+    std::vector<char> end_on_feature(points.size(), 2);  // 2: not computed yet
+    auto on_feature = [&](std::size_t v) {
+      if(end_on_feature[v] == 2)
+        end_on_feature[v] = std::sqrt(input_tree.squared_distance(points[v])) <= coverage_tolerance ? 1 : 0;
+      return end_on_feature[v] == 1;
+    };
+    std::vector<Segment> chords;
+    for(std::size_t i = 0; i < quad_edges.size(); ++i)
+      if(on_feature(quad_edge_ends[i].first) && on_feature(quad_edge_ends[i].second))
+        chords.push_back(quad_edges[i]);
+    Segment_tree chord_tree(chords.cbegin(), chords.cend());
+    if(!chords.empty())
+      chord_tree.accelerate_distance_queries();
+    for(const Segment& edge : input_edges) {
       ++c.edges;
-      const Point& p = ref.mesh.point(source(halfedge(e, ref.mesh), ref.mesh));
-      const Point& q = ref.mesh.point(target(halfedge(e, ref.mesh), ref.mesh));
       std::size_t here = 0;
       for(int k = 0; k < samples_per_edge; ++k) {
-        const Point sample = p + ((k + 0.5) / samples_per_edge) * (q - p);
+        const Point sample = edge.source() + ((k + 0.5) / samples_per_edge) * (edge.target() - edge.source());
         ++c.samples;
-        if(!quad_edges.empty() && std::sqrt(edge_tree.squared_distance(sample)) <= coverage_tolerance)
+        if(!quad_edges.empty() && std::sqrt(edge_tree.squared_distance(sample)) <= coverage_tolerance) {
           ++here;
+          ++c.traced;
+          continue;
+        }
+        if(chords.empty())
+          continue;
+        const auto closest = chord_tree.closest_point_and_primitive(sample);
+        const Segment& chord = *closest.second;
+        const Vector d = chord.target() - chord.source();
+        const double t = ((sample - chord.source()) * d) / d.squared_length();
+        const double distance = std::sqrt(CGAL::squared_distance(sample, closest.first));
+        if(t > 0 && t < 1 && distance <= 0.25 * std::sqrt(d.squared_length())) {
+          ++c.traced;
+          c.largest_sagitta = std::max(c.largest_sagitta, distance / mean_edge);
+        }
       }
       c.covered += here;
       if(here == std::size_t(samples_per_edge))
@@ -923,12 +968,15 @@ int main(int argc, char** argv)
     std::ostringstream value;
     value << format(100 * c.fraction()) << "% of their " << c.samples << " samples within "
           << format(coverage_tolerance) << " (1% of the mean quad edge) of a quad edge; " << c.edges_covered
-          << " edges covered entirely";
+          << " edges covered entirely; " << format(100 * c.traced_fraction())
+          << "% traced by quad edges with both ends on them (chords of a curved crease: largest sagitta "
+          << format(c.largest_sagitta) << " mean quad edges)";
     return value.str();
   };
   const Coverage boundary = coverage_of([&](edge_descriptor e) { return CGAL::is_border(e, ref.mesh); });
   report.info("boundary_edges", std::to_string(boundary.edges) + " input boundary edges; " + coverage_text(boundary));
-  std::string sharp_count = "-", sharp_coverage = "-", sharp_edges_covered = "-";
+  std::string sharp_count = "-", sharp_coverage = "-", sharp_edges_covered = "-", sharp_traced = "-",
+              sharp_sagitta = "-";
   if(options.sharp_degrees >= 0) {
     // detect_sharp_edges() also marks the boundary: only interior edges count here.
     auto is_sharp = ref.mesh.add_property_map<edge_descriptor, bool>("e:check_sharp", false).first;
@@ -940,6 +988,8 @@ int main(int argc, char** argv)
     sharp_count = std::to_string(sharp.edges);
     sharp_coverage = format(sharp.fraction());
     sharp_edges_covered = std::to_string(sharp.edges_covered);
+    sharp_traced = format(sharp.traced_fraction());
+    sharp_sagitta = format(sharp.largest_sagitta);
   }
 
   // --- statistics ----------------------------------------------------------------------
@@ -994,8 +1044,10 @@ int main(int argc, char** argv)
             << " irregular_interior=" << irregular_interior << " irregular_boundary=" << irregular_boundary
             << " area_ratio=" << format(area_ratio) << " hausdorff=" << format(hausdorff)
             << " sharp_edges=" << sharp_count << " sharp_coverage=" << sharp_coverage
-            << " sharp_edges_covered=" << sharp_edges_covered << " boundary_edges=" << boundary.edges
-            << " boundary_coverage=" << format(boundary.fraction()) << " mean_edge=" << format(mean_edge);
+            << " sharp_edges_covered=" << sharp_edges_covered << " sharp_traced=" << sharp_traced
+            << " sharp_largest_sagitta=" << sharp_sagitta << " boundary_edges=" << boundary.edges
+            << " boundary_coverage=" << format(boundary.fraction())
+            << " boundary_traced=" << format(boundary.traced_fraction()) << " mean_edge=" << format(mean_edge);
   for(const auto& [key, value] : report.summary)
     std::cout << " " << key << "=" << value;
   std::cout << std::endl;

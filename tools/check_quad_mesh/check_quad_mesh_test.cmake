@@ -142,6 +142,27 @@ check(edge_relative_tolerance cube.off cube_quads_moved.off "--distance-toleranc
       "summary valid=0 failed=hausdorff ")
 
 # Unreadable input and bad command lines: status 2.
+# A tent whose crease bends: (0,0,1) (1,0.05,1) (2,0,1), with planar sides
+# going down to z = 0 one unit away. Two quads whose middle edge is the chord
+# (0,0,1)-(2,0,1) of the crease: the samples of the crease are 0.05 x (x <= 1)
+# off the chord, so only 4 of 10 are within 1% of the mean quad edge (1.665),
+# but all 10 are traced (the chord's ends are on the crease, and they are
+# within a quarter of its length); largest sagitta 0.045 / 1.665 = 0.027.
+# Moved to y = 0.3, the same chord has no end on the crease: nothing is traced.
+set(tent_points "0 0 1\n1 0.05 1\n2 0 1\n0 -1 0\n1 -0.95 0\n2 -1 0\n0 1 0\n1 1.05 0\n2 1 0\n")
+file(WRITE "${WORK_DIR}/bent_crease.off" "OFF\n9 8 0\n${tent_points}\
+3 0 3 4\n3 0 4 1\n3 1 4 5\n3 1 5 2\n3 0 1 7\n3 0 7 6\n3 1 2 8\n3 1 8 7\n")
+file(WRITE "${WORK_DIR}/bent_crease_chords.off"
+     "OFF\n6 2 0\n0 -1 0\n2 -1 0\n2 0 1\n0 0 1\n2 1 0\n0 1 0\n4 0 1 2 3\n4 3 2 4 5\n")
+file(WRITE "${WORK_DIR}/bent_crease_beside.off"
+     "OFF\n6 2 0\n0 -1 0\n2 -1 0\n2 0.3 0.7\n0 0.3 0.7\n2 1 0\n0 1 0\n4 0 1 2 3\n4 3 2 4 5\n")
+check(crease_traced_by_chords bent_crease.off bent_crease_chords.off "--sharp-edges 40 --max-hausdorff 0.05" 0
+      "sharp_edges: 2 interior input edges above 40 degrees; 40% of their 10 samples [^\n]*; 0 edges covered entirely; 100% traced [^\n]*largest sagitta 0.027"
+      "sharp_coverage=0.4 sharp_edges_covered=0 sharp_traced=1 ")
+check(crease_beside_the_quads bent_crease.off bent_crease_beside.off "--sharp-edges 40" 1
+      "sharp_edges: 2 interior input edges above 40 degrees; 0% of their 10 samples [^\n]*; 0% traced"
+      "sharp_coverage=0 sharp_edges_covered=0 sharp_traced=0 ")
+
 check(missing_file cube.off no_such_file.off "" 2 "QUADS '[^']*no_such_file.off' cannot be opened")
 file(WRITE "${WORK_DIR}/garbage.off" "this is not a mesh\n")
 check(garbage_input garbage.off cube_quads.off "" 2 "INPUT '[^']*garbage.off' is not a readable mesh")

@@ -131,8 +131,10 @@ constexpr double default_minimum_quads = 1000;
 // only a fold of nearly 180 degrees (a degenerate crease) counts as sharp.
 double crease_degrees(const Options& o) { return o.sharp_degrees >= 0 ? o.sharp_degrees : 179.9; }
 
-// With a map, creases shorter than this many quads in all (noise on a scan: a
-// quad mesh cannot follow them) are not features.
+// With a map, creases shorter than this many quads (noise on a scan: a quad
+// mesh cannot follow them) are not features: networks of sharp edges shorter
+// in all, and crease curves shorter that do not join two corners (see
+// select_sharp_edge_constraints(), minimum_feature_length).
 constexpr double minimum_crease_quads = 3;
 
 // The named parameters of the sharp edges: the border with boundary alignment,

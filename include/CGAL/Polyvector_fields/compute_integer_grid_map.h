@@ -36,6 +36,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -223,17 +224,35 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
     result.flipped_per_round.clear();
     result.stiffening_rounds = 0;
     result.integer_roundings = 0;
-    code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R, y, result);
+    // before the last solve, the wider search only for a few flips (see Solve)
+    const bool last = !has_features || attempt == internal::max_feature_releases;
+    bool narrowed = false;
+    code = internal::solve_with_stiffening(
+      M, S, nx, m, p, solver_prototype, R,
+      last ? std::numeric_limits<std::size_t>::max() : internal::wide_search_max_flips_before_release, y, narrowed,
+      result);
     if(code != Error_code::SUCCESS)
       return code;
-    if(!has_features || result.flipped_per_round.empty() ||
-       *std::min_element(result.flipped_per_round.begin(), result.flipped_per_round.end()) == 0 ||
-       attempt == internal::max_feature_releases)
+    if(last || result.flipped_per_round.empty() ||
+       *std::min_element(result.flipped_per_round.begin(), result.flipped_per_round.end()) == 0)
       break;
     const std::size_t released = internal::release_features_near_flips(M, R, S, y, feature);
     result.released_feature_edges += released;
     if(released == 0)
+    {
+      // this map is the one returned: it gets the wider search too
+      if(narrowed)
+      {
+        result.flipped_per_round.clear();
+        result.stiffening_rounds = 0;
+        result.integer_roundings = 0;
+        code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R,
+                                               std::numeric_limits<std::size_t>::max(), y, narrowed, result);
+        if(code != Error_code::SUCCESS)
+          return code;
+      }
       break;
+    }
   }
 
   // output: snapped to a dyadic grid, so that seams and singularities are exact
@@ -334,7 +353,10 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// rounds start again from unit weights and round the integers in every round
 /// (a wider search, slower: a Schur complement per round), and the best round
 /// of both is kept; the first round of both, with unit weights, is solved
-/// once. The greedy rounding updates only the block of the integers
+/// once. With features, a solve that will release features (see
+/// <b>Features</b>) runs the wider search only when the fast rounds left at
+/// most 16 flipped faces: beyond, the features beside them are released
+/// whatever the search, and the solve after the release has the wider search. The greedy rounding updates only the block of the integers
 /// still free, about `m^3 / 3` operations for `m` integer unknowns.
 ///
 /// <b>Output.</b> `uv_map[h]` is the value at `target(h)` inside `face(h)`. The

@@ -80,10 +80,15 @@ namespace Polyvector_fields {
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_feature_length}
-///     \cgalParamDescription{sharp edges connected to each other (through their vertices) whose total
-///                           length is below this are dropped: on a scan, short creases of a few edges
-///                           are noise that a quad mesh cannot follow; the border is always kept; given
-///                           with `Polyvector_fields::parameters::minimum_feature_length()`}
+///     \cgalParamDescription{the creases shorter than this are dropped: on a scan, the sharp edges
+///                           make short zigzags that a quad mesh cannot follow. Dropped are the networks
+///                           of sharp edges (connected through their vertices) shorter than this in all,
+///                           and the crease curves shorter than this that do not join two corners. A
+///                           crease curve is a chain of sharp edges through vertices where exactly two
+///                           of them meet (the border aside) and turn by at most 45 degrees; a corner is
+///                           a vertex where three or more sharp or border edges meet (the edges of a box
+///                           are kept whatever their length). The border is always kept; given with
+///                           `Polyvector_fields::parameters::minimum_feature_length()`}
 ///     \cgalParamType{`double >= 0`, in mesh units}
 ///     \cgalParamDefault{0: every sharp edge is kept}
 ///   \cgalParamNEnd

@@ -46,10 +46,140 @@ inline double dihedral_normal_angle(const Face_frame& a, const Face_frame& b)
   return std::acos((std::max)(-1.0, (std::min)(1.0, cosine)));
 }
 
+// Two sharp edges that meet at a vertex where no other sharp edge (nor the
+// border) meets continue one crease curve when they turn by at most this
+// angle there; beyond, the vertex is a corner of the crease network.
+constexpr double crease_curve_max_turn_degrees = 45;
+
+// Drops the noise among the kept sharp edges (`Kept`: e, border), the creases
+// too short for the quads that will follow them:
+// - every edge of a network (sharp edges connected through their vertices,
+//   the border aside) shorter than `minimum_length` in all;
+// - every edge of a crease curve shorter than `minimum_length`, unless both
+//   of its ends are junctions, where three or more sharp or border edges
+//   meet (the edge of a box between two corners). A crease curve is a chain
+//   of sharp edges through vertices where exactly two of them meet, at a turn
+//   of at most crease_curve_max_turn_degrees: on a scan, the sharp edges at
+//   a given dihedral angle make short zigzags, which turn at almost every
+//   vertex; on a CAD model they are long curves that meet at corners.
+// The border edges are kept.
+template <typename TriangleMesh, typename VertexPointMap, typename Kept>
+void drop_short_creases(const TriangleMesh& tm, VertexPointMap vpm, double minimum_length, std::vector<Kept>& kept)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  std::map<vertex_descriptor, std::size_t> node_of;
+  std::vector<vertex_descriptor> nodes;
+  auto node = [&](vertex_descriptor v) {
+    const auto inserted = node_of.emplace(v, nodes.size());
+    if(inserted.second)
+      nodes.push_back(v);
+    return inserted.first->second;
+  };
+  auto point = [&](std::size_t n) { return to_array(get(vpm, nodes[n])); };
+  // the sharp edges (indices into kept) with their two nodes and length; every
+  // vertex of a kept edge, border included, gets its node here
+  std::vector<std::size_t> sharp;
+  std::vector<std::array<std::size_t, 2> > ends;
+  std::vector<double> length;
+  for(std::size_t i = 0; i < kept.size(); ++i)
+  {
+    const auto h = halfedge(kept[i].e, tm);
+    const std::size_t a = node(source(h, tm)), b = node(target(h, tm));
+    if(kept[i].border)
+      continue;
+    // the length in mesh units: scaled first, so that its square cannot overflow
+    std::array<double, 3> pa = point(a), pb = point(b);
+    const int e = scale_to_unit({ &pa, &pb });
+    const auto d = difference(pb, pa);
+    sharp.push_back(i);
+    ends.push_back({ a, b });
+    length.push_back(std::ldexp(std::sqrt(dot(d, d)), e));
+  }
+  std::vector<std::vector<std::size_t> > incident(nodes.size());  // sharp edges (positions in `sharp`)
+  std::vector<std::size_t> border_degree(nodes.size(), 0);
+  for(std::size_t s = 0; s < sharp.size(); ++s)
+    for(std::size_t n : ends[s])
+      incident[n].push_back(s);
+  for(const Kept& k : kept)
+    if(k.border)
+    {
+      const auto h = halfedge(k.e, tm);
+      ++border_degree[node(source(h, tm))];
+      ++border_degree[node(target(h, tm))];
+    }
+  auto is_junction = [&](std::size_t n) { return incident[n].size() + border_degree[n] >= 3; };
+
+  // union-find over the sharp edges: one for networks, one for curves
+  auto make_sets = [&]() {
+    std::vector<std::size_t> up(sharp.size());
+    for(std::size_t s = 0; s < up.size(); ++s)
+      up[s] = s;
+    return up;
+  };
+  auto root = [](std::vector<std::size_t>& up, std::size_t x) {
+    while(up[x] != x)
+      x = up[x] = up[up[x]];
+    return x;
+  };
+  std::vector<std::size_t> network = make_sets(), curve = make_sets();
+  std::vector<std::size_t> curve_ends(sharp.size(), 0), junction_ends(sharp.size(), 0);
+  const double max_turn = crease_curve_max_turn_degrees * CGAL_PI / 180.0;
+  for(std::size_t n = 0; n < nodes.size(); ++n)
+  {
+    const std::vector<std::size_t>& here = incident[n];
+    for(std::size_t k = 1; k < here.size(); ++k)
+      network[root(network, here[k])] = root(network, here[0]);
+    bool continues = false;
+    if(here.size() == 2 && border_degree[n] == 0)
+    {
+      // the turn between the incoming direction (p to n) and the outgoing one (n to q)
+      const std::size_t p = ends[here[0]][0] == n ? ends[here[0]][1] : ends[here[0]][0];
+      const std::size_t q = ends[here[1]][0] == n ? ends[here[1]][1] : ends[here[1]][0];
+      const auto in = scaled_difference(point(n), point(p)), out = scaled_difference(point(q), point(n));
+      const double norms = std::sqrt(dot(in, in) * dot(out, out));
+      continues = norms > 0 && std::acos((std::max)(-1.0, (std::min)(1.0, dot(in, out) / norms))) <= max_turn;
+    }
+    if(continues)
+      curve[root(curve, here[1])] = root(curve, here[0]);
+  }
+  for(std::size_t n = 0; n < nodes.size(); ++n)
+  {
+    const std::vector<std::size_t>& here = incident[n];
+    const bool end = !(here.size() == 2 && root(curve, here[0]) == root(curve, here[1]));
+    if(!end)
+      continue;
+    for(std::size_t s : here)
+    {
+      const std::size_t c = root(curve, s);
+      ++curve_ends[c];
+      junction_ends[c] += is_junction(n) ? 1 : 0;
+    }
+  }
+  std::vector<double> network_length(sharp.size(), 0), curve_length(sharp.size(), 0);
+  for(std::size_t s = 0; s < sharp.size(); ++s)
+  {
+    network_length[root(network, s)] += length[s];
+    curve_length[root(curve, s)] += length[s];
+  }
+  std::vector<char> drop(kept.size(), 0);
+  for(std::size_t s = 0; s < sharp.size(); ++s)
+  {
+    const std::size_t c = root(curve, s);
+    const bool between_junctions = curve_ends[c] == 2 && junction_ends[c] == 2;
+    drop[sharp[s]] = network_length[root(network, s)] < minimum_length ||
+                     (curve_length[c] < minimum_length && !between_junctions);
+  }
+  std::size_t w = 0;
+  for(std::size_t i = 0; i < kept.size(); ++i)
+    if(!drop[i])
+      kept[w++] = kept[i];
+  kept.resize(w);
+}
+
 // See select_sharp_edge_constraints(). `vpm` gives the points, `np` goes to
 // detect_sharp_edges() (vertex_point_map, geom_traits).
-// `with_border`: border edges are kept too; networks of sharp edges shorter
-// than `minimum_length` are dropped; `feature_edge(e, kept)` is called
+// `with_border`: border edges are kept too; the creases shorter than
+// `minimum_length` are dropped (drop_short_creases()); `feature_edge(e, kept)` is called
 // once per edge, after the faces' checks, with whether it was kept.
 template <typename TriangleMesh, typename VertexPointMap, typename FaceDescriptor, typename Vector_3,
           typename NamedParameters, typename FeatureEdgeOutput>
@@ -121,45 +251,8 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
         kept.push_back(Kept{ e, angle, false });
     }
   }
-  // Networks of sharp edges (connected through their vertices) shorter than
-  // minimum_length in all are noise, not creases: dropped. The border stays.
   if(minimum_length > 0)
-  {
-    std::map<vertex_descriptor, std::size_t> parent;
-    std::vector<std::size_t> up;
-    auto node = [&](vertex_descriptor v) {
-      const auto inserted = parent.emplace(v, up.size());
-      if(inserted.second)
-        up.push_back(up.size());
-      return inserted.first->second;
-    };
-    auto root = [&up](std::size_t x) {
-      while(up[x] != x)
-        x = up[x] = up[up[x]];
-      return x;
-    };
-    for(const Kept& k : kept)
-      if(!k.border)
-      {
-        const auto h = halfedge(k.e, tm);
-        const std::size_t a = root(node(source(h, tm))), b = root(node(target(h, tm)));
-        up[a] = b;
-      }
-    std::vector<double> length(up.size(), 0);
-    auto edge_length = [&](edge_descriptor e) {
-      const auto h = halfedge(e, tm);
-      const auto d = scaled_difference(to_array(get(vpm, target(h, tm))), to_array(get(vpm, source(h, tm))));
-      return std::sqrt(dot(d, d));
-    };
-    for(const Kept& k : kept)
-      if(!k.border)
-        length[root(node(source(halfedge(k.e, tm), tm)))] += edge_length(k.e);
-    kept.erase(std::remove_if(kept.begin(), kept.end(),
-                              [&](const Kept& k) {
-                                return !k.border && length[root(node(source(halfedge(k.e, tm), tm)))] < minimum_length;
-                              }),
-               kept.end());
-  }
+    drop_short_creases(tm, vpm, minimum_length, kept);
   std::set<edge_descriptor> kept_set;
   for(const Kept& k : kept)
     kept_set.insert(k.e);

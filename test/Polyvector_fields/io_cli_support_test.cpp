@@ -154,10 +154,9 @@ TEST(CliSupportSharpEdges, TheAngleMustBeExceeded)
   }
 }
 
-TEST(CliSupportSharpEdges, BorderEdgesAreNotSharp)
+// The unit box without its top side (two triangles at z = 1).
+Mesh open_box()
 {
-  // One side of the box removed: its four border edges, which CGAL's
-  // detect_sharp_edges() marks, give no constraint.
   Mesh tm = box(1, 1, 1);
   std::vector<Face> top;
   for(Face f : faces(tm))
@@ -168,10 +167,18 @@ TEST(CliSupportSharpEdges, BorderEdgesAreNotSharp)
     if(all_up)
       top.push_back(f);
   }
-  ASSERT_EQ(top.size(), 2u);
+  EXPECT_EQ(top.size(), 2u);
   for(Face f : top)
     CGAL::Euler::remove_face(halfedge(f, tm), tm);
   tm.collect_garbage();
+  return tm;
+}
+
+TEST(CliSupportSharpEdges, BorderEdgesAreNotSharp)
+{
+  // One side of the box removed: its four border edges, which CGAL's
+  // detect_sharp_edges() marks, give no constraint.
+  const Mesh tm = open_box();
   std::vector<Constraint> constraints;
   ASSERT_EQ(PVF::select_sharp_edge_constraints(tm, 30, 2, constraints), PVF::Error_code::SUCCESS);
   ASSERT_EQ(constraints.size(), 10u);
@@ -307,6 +314,10 @@ TEST(CliSupportSharpEdges, ShortCreasesAreDropped)
   std::vector<Constraint> constraints;
   EXPECT_EQ(kept_crease_edges(box(1, 1, 1), 3, 30, &constraints), 12u);
   EXPECT_EQ(constraints.size(), 12u);
+  // Open at the top, without boundary alignment: a vertical edge ends at a
+  // bottom corner (three sharp edges) and at a top corner (one sharp edge and
+  // two border edges, which count though they are not kept): all 8 kept.
+  EXPECT_EQ(kept_crease_edges(open_box(), 3, 30), 8u);
 }
 
 TEST(CliSupportSharpEdges, RefusesBadParameters)

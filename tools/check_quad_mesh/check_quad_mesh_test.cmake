@@ -141,7 +141,6 @@ check(edge_relative_tolerance cube.off cube_quads_moved.off "--distance-toleranc
       "on_surface: [^\n]* 0 vertices beyond [^\n]*\\(ok"
       "summary valid=0 failed=hausdorff ")
 
-# Unreadable input and bad command lines: status 2.
 # A tent whose crease bends: (0,0,1) (1,0.05,1) (2,0,1), with planar sides
 # going down to z = 0 one unit away. Two quads whose middle edge is the chord
 # (0,0,1)-(2,0,1) of the crease: the samples of the crease are 0.05 x (x <= 1)
@@ -162,7 +161,20 @@ check(crease_traced_by_chords bent_crease.off bent_crease_chords.off "--sharp-ed
 check(crease_beside_the_quads bent_crease.off bent_crease_beside.off "--sharp-edges 40" 1
       "sharp_edges: 2 interior input edges above 40 degrees; 0% of their 10 samples [^\n]*; 0% traced"
       "sharp_coverage=0 sharp_edges_covered=0 sharp_traced=0 ")
+# Bent more, (0,0,1) (1,0.6,1) (2,0,1) (crease 81 degrees, side pieces 46):
+# the samples are 0.6 x off the same chord, and the last one of each edge
+# (0.54) is beyond a quarter of it (0.5): 8 of 10 traced, none covered (the
+# flat quads are folded against the steep input there, a failure of its own).
+set(steep_tent_points "0 0 1\n1 0.6 1\n2 0 1\n0 -1 0\n1 -0.4 0\n2 -1 0\n0 1 0\n1 1.6 0\n2 1 0\n")
+file(WRITE "${WORK_DIR}/steep_crease.off" "OFF\n9 8 0\n${steep_tent_points}\
+3 0 3 4\n3 0 4 1\n3 1 4 5\n3 1 5 2\n3 0 1 7\n3 0 7 6\n3 1 2 8\n3 1 8 7\n")
+check(crease_beyond_a_quarter_of_the_chord steep_crease.off bent_crease_chords.off
+      "--sharp-edges 60 --max-hausdorff 0.5" 1
+      "sharp_edges: 2 interior input edges above 60 degrees; 0% of their 10 samples [^\n]*; 80% traced"
+      "summary valid=0 failed=folded "
+      "sharp_coverage=0 sharp_edges_covered=0 sharp_traced=0.8 ")
 
+# Unreadable input and bad command lines: status 2.
 check(missing_file cube.off no_such_file.off "" 2 "QUADS '[^']*no_such_file.off' cannot be opened")
 file(WRITE "${WORK_DIR}/garbage.off" "this is not a mesh\n")
 check(garbage_input garbage.off cube_quads.off "" 2 "INPUT '[^']*garbage.off' is not a readable mesh")

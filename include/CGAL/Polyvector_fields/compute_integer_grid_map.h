@@ -233,26 +233,31 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
       result);
     if(code != Error_code::SUCCESS)
       return code;
-    if(last || result.flipped_per_round.empty() ||
-       *std::min_element(result.flipped_per_round.begin(), result.flipped_per_round.end()) == 0)
+    auto flat = [&result]() {
+      return result.flipped_per_round.empty() ||
+             *std::min_element(result.flipped_per_round.begin(), result.flipped_per_round.end()) == 0;
+    };
+    if(last || flat())
       break;
-    const std::size_t released = internal::release_features_near_flips(M, R, S, y, feature);
+    std::size_t released = internal::release_features_near_flips(M, R, S, y, feature);
+    if(released == 0 && narrowed)
+    {
+      // this map would be the one returned: the wider search first, then the
+      // release again, on its flips
+      result.flipped_per_round.clear();
+      result.stiffening_rounds = 0;
+      result.integer_roundings = 0;
+      code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R,
+                                             std::numeric_limits<std::size_t>::max(), y, narrowed, result);
+      if(code != Error_code::SUCCESS)
+        return code;
+      if(flat())
+        break;
+      released = internal::release_features_near_flips(M, R, S, y, feature);
+    }
     result.released_feature_edges += released;
     if(released == 0)
-    {
-      // this map is the one returned: it gets the wider search too
-      if(narrowed)
-      {
-        result.flipped_per_round.clear();
-        result.stiffening_rounds = 0;
-        result.integer_roundings = 0;
-        code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R,
-                                               std::numeric_limits<std::size_t>::max(), y, narrowed, result);
-        if(code != Error_code::SUCCESS)
-          return code;
-      }
       break;
-    }
   }
 
   // output: snapped to a dyadic grid, so that seams and singularities are exact
@@ -356,7 +361,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// once. With features, a solve that will release features (see
 /// <b>Features</b>) runs the wider search only when the fast rounds left at
 /// most 16 flipped faces: beyond, the features beside them are released
-/// whatever the search, and the solve after the release has the wider search. The greedy rounding updates only the block of the integers
+/// whatever the search. The map that is returned always had the wider search. The greedy rounding updates only the block of the integers
 /// still free, about `m^3 / 3` operations for `m` integer unknowns.
 ///
 /// <b>Output.</b> `uv_map[h]` is the value at `target(h)` inside `face(h)`. The

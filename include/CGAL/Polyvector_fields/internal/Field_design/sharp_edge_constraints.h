@@ -57,7 +57,8 @@ constexpr double crease_curve_max_turn_degrees = 45;
 //   the border aside) shorter than `minimum_length` in all;
 // - every edge of a crease curve shorter than `minimum_length`, unless both
 //   of its ends are junctions, where three or more sharp or border edges
-//   meet (the edge of a box between two corners). A crease curve is a chain
+//   meet (the edge of a box between two corners; the border counts whether
+//   it is kept or not). A crease curve is a chain
 //   of sharp edges through vertices where exactly two of them meet, at a turn
 //   of at most crease_curve_max_turn_degrees: on a scan, the sharp edges at
 //   a given dihedral angle make short zigzags, which turn at almost every
@@ -76,17 +77,16 @@ void drop_short_creases(const TriangleMesh& tm, VertexPointMap vpm, double minim
     return inserted.first->second;
   };
   auto point = [&](std::size_t n) { return to_array(get(vpm, nodes[n])); };
-  // the sharp edges (indices into kept) with their two nodes and length; every
-  // vertex of a kept edge, border included, gets its node here
+  // the sharp edges (indices into kept) with their two nodes and length
   std::vector<std::size_t> sharp;
   std::vector<std::array<std::size_t, 2> > ends;
   std::vector<double> length;
   for(std::size_t i = 0; i < kept.size(); ++i)
   {
-    const auto h = halfedge(kept[i].e, tm);
-    const std::size_t a = node(source(h, tm)), b = node(target(h, tm));
     if(kept[i].border)
       continue;
+    const auto h = halfedge(kept[i].e, tm);
+    const std::size_t a = node(source(h, tm)), b = node(target(h, tm));
     // the length in mesh units: scaled first, so that its square cannot overflow
     std::array<double, 3> pa = point(a), pb = point(b);
     const int e = scale_to_unit({ &pa, &pb });
@@ -100,13 +100,11 @@ void drop_short_creases(const TriangleMesh& tm, VertexPointMap vpm, double minim
   for(std::size_t s = 0; s < sharp.size(); ++s)
     for(std::size_t n : ends[s])
       incident[n].push_back(s);
-  for(const Kept& k : kept)
-    if(k.border)
-    {
-      const auto h = halfedge(k.e, tm);
-      ++border_degree[node(source(h, tm))];
-      ++border_degree[node(target(h, tm))];
-    }
+  // the border edges at each node, kept or not (a crease that ends on the
+  // border of an open box ends at a corner)
+  for(std::size_t n = 0; n < nodes.size(); ++n)
+    for(const auto h : CGAL::halfedges_around_target(nodes[n], tm))
+      border_degree[n] += CGAL::is_border_edge(h, tm) ? 1 : 0;
   auto is_junction = [&](std::size_t n) { return incident[n].size() + border_degree[n] >= 3; };
 
   // union-find over the sharp edges: one for networks, one for curves
@@ -123,6 +121,7 @@ void drop_short_creases(const TriangleMesh& tm, VertexPointMap vpm, double minim
   };
   std::vector<std::size_t> network = make_sets(), curve = make_sets();
   std::vector<std::size_t> curve_ends(sharp.size(), 0), junction_ends(sharp.size(), 0);
+  std::vector<char> joined(nodes.size(), 0);  // the two sharp edges of the node continue one curve there
   const double max_turn = crease_curve_max_turn_degrees * CGAL_PI / 180.0;
   for(std::size_t n = 0; n < nodes.size(); ++n)
   {
@@ -141,14 +140,13 @@ void drop_short_creases(const TriangleMesh& tm, VertexPointMap vpm, double minim
     }
     if(continues)
       curve[root(curve, here[1])] = root(curve, here[0]);
+    joined[n] = continues ? 1 : 0;
   }
   for(std::size_t n = 0; n < nodes.size(); ++n)
   {
-    const std::vector<std::size_t>& here = incident[n];
-    const bool end = !(here.size() == 2 && root(curve, here[0]) == root(curve, here[1]));
-    if(!end)
+    if(joined[n])
       continue;
-    for(std::size_t s : here)
+    for(std::size_t s : incident[n])
     {
       const std::size_t c = root(curve, s);
       ++curve_ends[c];
@@ -196,7 +194,6 @@ Error_code select_sharp_edge_constraints(const TriangleMesh& tm,
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::face_descriptor face_descriptor;
   typedef typename Graph_traits::edge_descriptor edge_descriptor;
-  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
 
   // The faces, numbered in the order of faces(tm), with their frames.

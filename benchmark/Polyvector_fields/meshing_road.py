@@ -37,7 +37,7 @@ import time
 
 GROUPS = ("bunny", "map160k", "million", "growth", "libigl", "corpus")
 # The stages of the program's `time (s)` line, in its order.
-STAGES = ("load mesh", "frames and connection", "constraints", "curvature", "design", "frame field", "roots",
+STAGES = ("load mesh", "refinement", "frames and connection", "constraints", "curvature", "design", "frame field", "roots",
           "singularities", "diagnostics", "parametrization", "quad mesh", "planarization", "write")
 # "The field" of the ratio target: everything from the mesh in memory to the field and its singularities
 # (the curvature included: the curvature constraints and the conjugate field need it). Not the field: reading
@@ -46,6 +46,8 @@ FIELD_STAGES = ("frames and connection", "constraints", "curvature", "design", "
                 "singularities")
 # The map's own sub-stages (the program's line `(time: comb and cut ...)`).
 MAP_STAGES = ("comb and cut", "seam reduction", "assembly", "factorization", "integer rounding", "stiffening")
+# The extraction's own sub-stages (the program's line `(time: charts ...)` under its quad mesh).
+QUAD_STAGES = ("charts", "fold-over repair", "integer points", "tracing", "cells", "quads and their checks")
 # The growth series on bumpy.off: L is one Loop step (x4 faces), S one sqrt(3) step (x3).
 GROWTH_SCHEMES = ("L", "LL", "LLL", "LLLL", "LLSSS")
 MAP_OPTIONS = ["--curvature-constraints", "1", "--parametrize"]
@@ -101,12 +103,14 @@ def number_list(text):
 
 def parse_output(out):
     """What the program's summary says: stages, map sub-stages, sizes and the quality figures."""
-    entry = {"stages": {}, "map_stages": {}}
+    entry = {"stages": {}, "map_stages": {}, "quad_stages": {}}
     for line in out.splitlines():
         if line.startswith("time (s)"):
             entry["stages"] = number_list(line[len("time (s)"):].split("(design:")[0])
         elif line.strip().startswith("(time: comb and cut"):
             entry["map_stages"] = number_list(line.strip()[len("(time:"):].rstrip(")"))
+        elif line.strip().startswith("(time: charts"):
+            entry["quad_stages"] = number_list(line.strip()[len("(time:"):].rstrip(")"))
         elif line.startswith("mesh "):
             m = re.search(r": (\d+) faces", line)
             if m:
@@ -632,6 +636,11 @@ def stage_table(road):
             for sub in MAP_STAGES:
                 if any(sub in e["map_stages"] for _, e in runs):
                     rows.append(["&nbsp;&nbsp;map: " + sub] + [fmt(e["map_stages"].get(sub)) for _, e in runs])
+        if stage == "quad mesh":
+            for sub in QUAD_STAGES:
+                if any(sub in e.get("quad_stages", {}) for _, e in runs):
+                    rows.append(["&nbsp;&nbsp;extraction: " + sub]
+                                + [fmt(e.get("quad_stages", {}).get(sub)) for _, e in runs])
     rows.append(["field (%s)" % ", ".join(FIELD_STAGES)] + [fmt(field_time(e)) for _, e in runs])
     rows.append(["sum of the stages"] + [fmt(sum(e["stages"].values())) for _, e in runs])
     rows.append(["**whole process** (wall, best of %s)" % "/".join(str(len(e.get("runs_s", [1]))) for _, e in runs)]

@@ -34,6 +34,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
@@ -71,6 +72,20 @@ using pvf_test::make_mesh;
 Soup sphere(double R, int nu, int nv) { return pvf_test::sphere_soup<Point>(R, nu, nv); }
 Soup cylinder(double R, double H, int nu, int nz) { return pvf_test::cylinder_soup<Point>(R, H, nu, nz); }
 Soup torus(double R, double r, int nu, int nv) { return pvf_test::torus_soup<Point>(R, r, nu, nv); }
+
+// A flat strip two vertices wide and n quads long, in the plane z = 0.
+Soup flat_strip(int n)
+{
+  Soup strip;
+  for(int i = 0; i <= n; ++i)
+  {
+    strip.points.push_back(Point(0.01 * i, 0, 0));
+    strip.points.push_back(Point(0.01 * i, 0.01, 0));
+  }
+  for(int i = 0; i < n; ++i)
+    strip.add_quad(2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1);
+  return strip;
+}
 
 // Flat disk of radius 1 in the plane z = 0, on a polar grid: a centre and
 // n_rings rings of n_theta points.
@@ -547,15 +562,7 @@ TEST(CurvatureEstimation, FallbackOnUnfittableParts)
   // never determine a quadric however far the ring grows (the growth stops
   // three rings after the target); every vertex falls back, with curvature 0.
   {
-    Soup strip;
-    const int n = 2000;
-    for(int i = 0; i <= n; ++i)
-    {
-      strip.points.push_back(Point(0.01 * i, 0, 0));
-      strip.points.push_back(Point(0.01 * i, 0.01, 0));
-    }
-    for(int i = 0; i < n; ++i)
-      strip.add_quad(2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1);
+    const Soup strip = flat_strip(2000);
     const Mesh tm = make_mesh<Mesh>(strip);
     auto map = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
     std::size_t fallbacks = 0;
@@ -683,6 +690,49 @@ TEST(CurvatureEstimation, SurfaceMeshAndPolyhedronAgree)
       EXPECT_NEAR(std::abs(dot(to_vec(a.d2), to_vec(b.d2))), 1., 1e-12);
     }
   }
+}
+
+// The jet fits and the face averages are shared among threads with
+// CGAL::Parallel_tag; each depends on its own vertex or face only, so the
+// curvatures must be the same to the last bit as with CGAL::Sequential_tag.
+// The torus has more vertices than one range of fits (2048), so that several
+// ranges run at once; the strip's vertices all take the fallback.
+TEST(CurvatureEstimation, ParallelIsBitIdenticalToSequential)
+{
+  auto check = [](const Soup& soup, const std::string& what) {
+    const Mesh tm = make_mesh<Mesh>(soup);
+    ASSERT_GT(num_vertices(tm), 2u * 2048u) << what;
+    auto sequential = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+    auto parallel = get(CGAL::dynamic_face_property_t<Curvatures>(), tm);
+    std::size_t sequential_fallbacks = 0, parallel_fallbacks = 0;
+    ASSERT_EQ(PVF::estimate_principal_curvatures<CGAL::Sequential_tag>(
+                tm, sequential, PVF::parameters::fallback_vertices(sequential_fallbacks)),
+              PVF::Error_code::SUCCESS) << what;
+#ifdef CGAL_LINKED_WITH_TBB
+    ASSERT_EQ(PVF::estimate_principal_curvatures<CGAL::Parallel_tag>(
+                tm, parallel, PVF::parameters::fallback_vertices(parallel_fallbacks)),
+              PVF::Error_code::SUCCESS) << what;
+#else
+    // CGAL::Parallel_tag needs TBB; the default tag is then sequential.
+    ASSERT_EQ(PVF::estimate_principal_curvatures(tm, parallel, PVF::parameters::fallback_vertices(parallel_fallbacks)),
+              PVF::Error_code::SUCCESS) << what;
+#endif
+    EXPECT_EQ(sequential_fallbacks, parallel_fallbacks) << what;
+    std::size_t differing = 0;
+    for(auto f : faces(tm))
+    {
+      const Curvatures& a = get(sequential, f);
+      const Curvatures& b = get(parallel, f);
+      const std::array<double, 8> x = { a.k1, a.k2, a.d1.x(), a.d1.y(), a.d1.z(), a.d2.x(), a.d2.y(), a.d2.z() };
+      const std::array<double, 8> y = { b.k1, b.k2, b.d1.x(), b.d1.y(), b.d1.z(), b.d2.x(), b.d2.y(), b.d2.z() };
+      for(std::size_t i = 0; i < x.size(); ++i)
+        if(std::memcmp(&x[i], &y[i], sizeof(double)) != 0)
+          ++differing;
+    }
+    EXPECT_EQ(differing, 0u) << what << ": values that differ between the sequential and the parallel run";
+  };
+  check(torus(3., 1., 160, 40), "torus");
+  check(flat_strip(2500), "flat strip (every vertex falls back)");
 }
 
 TEST(CurvatureEstimation, NamedParameters)

@@ -47,6 +47,7 @@
 #include <complex>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -745,6 +746,65 @@ TEST(QuadGeneric, SurfaceMeshAndPolyhedron)
     for(Halfedge h : halfedges_around_face(halfedge(*f2, q2), q2))
       b.push_back(std::size_t(target(h, q2)));
     EXPECT_EQ(a, b);
+  }
+}
+
+// With CGAL::Parallel_tag the extraction computes the quad points, the first
+// fold check of the quads and the distances of the input to the quads on
+// several threads, each value on its own: the quad mesh and every count and
+// distance of the result must be the same to the last bit as with
+// CGAL::Sequential_tag. The maps have more quads and vertices than one range
+// of that work (512 and 1024), so that several ranges run at once.
+TEST(QuadGeneric, ParallelIsBitIdenticalToSequential)
+{
+  for(const std::string name : { "bumpy", "eight" })
+  {
+    std::unique_ptr<Quad_case> c = make_quad_case(name);
+    Mesh sequential, parallel;
+    PVF::Quad_extraction_result rs, rp;
+    ASSERT_EQ(PVF::extract_quad_mesh<CGAL::Sequential_tag>(c->tm, c->uv, sequential, rs), PVF::Error_code::SUCCESS)
+      << name << ": " << rs.diagnostic;
+#ifdef CGAL_LINKED_WITH_TBB
+    ASSERT_EQ(PVF::extract_quad_mesh<CGAL::Parallel_tag>(c->tm, c->uv, parallel, rp), PVF::Error_code::SUCCESS)
+      << name << ": " << rp.diagnostic;
+#else
+    // CGAL::Parallel_tag needs TBB; the default tag is then sequential.
+    ASSERT_EQ(PVF::extract_quad_mesh(c->tm, c->uv, parallel, rp), PVF::Error_code::SUCCESS) << name << ": " << rp.diagnostic;
+#endif
+    ASSERT_GT(rs.quads, 512u) << name;
+    EXPECT_EQ(rs.quads, rp.quads) << name;
+    EXPECT_EQ(rs.vertices, rp.vertices) << name;
+    EXPECT_EQ(rs.singular_points, rp.singular_points) << name;
+    EXPECT_EQ(rs.unfolded_quads, rp.unfolded_quads) << name;
+    EXPECT_EQ(rs.moved_quad_vertices, rp.moved_quad_vertices) << name;
+    EXPECT_EQ(rs.snapped_tips, rp.snapped_tips) << name;
+    EXPECT_EQ(std::memcmp(&rs.largest_input_distance, &rp.largest_input_distance, sizeof(double)), 0)
+      << name << ": " << rs.largest_input_distance << " against " << rp.largest_input_distance;
+    ASSERT_EQ(num_vertices(sequential), num_vertices(parallel)) << name;
+    ASSERT_EQ(num_faces(sequential), num_faces(parallel)) << name;
+    std::size_t differing_points = 0, differing_faces = 0;
+    auto v1 = vertices(sequential).begin(), v2 = vertices(parallel).begin();
+    for(; v1 != vertices(sequential).end(); ++v1, ++v2)
+    {
+      const Point& a = sequential.point(*v1);
+      const Point& b = parallel.point(*v2);
+      const double x[3] = { a.x(), a.y(), a.z() }, y[3] = { b.x(), b.y(), b.z() };
+      if(std::memcmp(x, y, sizeof(x)) != 0)
+        ++differing_points;
+    }
+    auto f1 = faces(sequential).begin(), f2 = faces(parallel).begin();
+    for(; f1 != faces(sequential).end(); ++f1, ++f2)
+    {
+      std::vector<std::size_t> a, b;
+      for(Halfedge h : halfedges_around_face(halfedge(*f1, sequential), sequential))
+        a.push_back(std::size_t(target(h, sequential)));
+      for(Halfedge h : halfedges_around_face(halfedge(*f2, parallel), parallel))
+        b.push_back(std::size_t(target(h, parallel)));
+      if(a != b)
+        ++differing_faces;
+    }
+    EXPECT_EQ(differing_points, 0u) << name;
+    EXPECT_EQ(differing_faces, 0u) << name;
   }
 }
 

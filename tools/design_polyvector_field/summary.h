@@ -228,6 +228,15 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
       std::cout << "; " << e.snapped_tips << " corners moved onto tips of the surface finer than the quads";
     if(sizing.deviation >= 0)
       std::cout << "; every input point within " << 100 * sizing.deviation << "% of the bounding-box diagonal";
+    {
+      const auto old_flags = std::cout.flags();
+      const auto old_precision = std::cout.precision();
+      std::cout << std::fixed << std::setprecision(3) << "\n                (time: charts " << e.time_setup
+                << ", fold-over repair " << e.time_repair << ", integer points " << e.time_points << ", tracing "
+                << e.time_tracing << ", cells " << e.time_faces << ", quads and their checks " << e.time_output << ")";
+      std::cout.flags(old_flags);
+      std::cout.precision(old_precision);
+    }
     std::cout << "\nplanarity       max " << 100 * q.before.max << "%, mean " << 100 * q.before.mean << "%";
     if(q.planarized)
     {
@@ -249,7 +258,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     std::cout << "\n";
   }
   std::cout << "time (s)       ";
-  for(const char* stage : { "load mesh", "frames and connection", "constraints", "curvature", "design", "frame field",
+  for(const char* stage : { "load mesh", "refinement", "frames and connection", "constraints", "curvature", "design", "frame field",
                             "roots", "singularities", "diagnostics", "parametrization", "quad mesh", "planarization",
                             "write" })
     if(clock.times.count(stage))

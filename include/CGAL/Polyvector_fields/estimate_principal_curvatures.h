@@ -92,6 +92,9 @@ namespace Polyvector_fields {
 /// suits smooth, finely sampled surfaces; degree 2 is the more robust choice
 /// for noisy or coarse meshes.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         with parallelism (TBB) the jet fits of the vertices and the faces are shared among threads;
+///         each fit depends on its vertex only, so the result is the same to the last bit
 /// \tparam Mesh_or_bundle a `Tangent_bundle`, or a model of `FaceListGraph` and `VertexListGraph`
 ///         (whose bundle is then built with the named parameter `vertex_point_map`)
 /// \tparam CurvatureMap a model of `WritablePropertyMap` with
@@ -151,7 +154,8 @@ namespace Polyvector_fields {
 /// - `Error_code::SUCCESS` otherwise.
 ///
 /// \sa `Principal_curvatures`, `shape_operator()`, `select_curvature_constraints()`
-template <typename Mesh_or_bundle,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename Mesh_or_bundle,
           typename CurvatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
@@ -186,7 +190,7 @@ Error_code estimate_principal_curvatures(const Mesh_or_bundle& mesh_or_bundle,
 
   std::vector<Curvature_value> values;
   std::size_t fallbacks = 0;
-  const Error_code code = internal::estimate_face_principal_curvatures(
+  const Error_code code = internal::estimate_face_principal_curvatures<ConcurrencyTag>(
     bundle, internal::Curvature_fit_settings{ degree_fitting, degree_monge, ring_size }, values, fallbacks);
   if(code != Error_code::SUCCESS)
     return code;

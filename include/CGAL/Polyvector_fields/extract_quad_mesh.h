@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <string>
+#include <type_traits>
 
 namespace CGAL {
 namespace Polyvector_fields {
@@ -200,6 +201,9 @@ struct Quad_extraction_result
 /// All computations are done in `double` (and exact rationals where stated),
 /// whatever the kernels of `tm` and `quad_mesh`.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+///         with parallelism (TBB) the distances of the input to the quads (<b>Tips</b>) are shared among
+///         threads; the quad mesh is the same to the last bit
 /// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` whose faces are triangles
 /// \tparam UVMap a model of `ReadablePropertyMap` from halfedges of `tm` to a 2D point (with `x()` and `y()`)
 ///         or to a pair of numbers indexed by `[0]` and `[1]` (`std::array<double, 2>`), as written by
@@ -291,7 +295,8 @@ struct Quad_extraction_result
 ///          `quad_mesh` is written only on success; `tm` is never changed.
 ///
 /// \sa `compute_integer_grid_map()`, `quad_planarity()`, `planarize_quad_mesh()`, `IO::write_quad_mesh_VTK()`
-template <typename TriangleMesh, typename UVMap, typename PolygonMesh,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename UVMap,
+          typename PolygonMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
           typename NamedParametersOut = CGAL::parameters::Default_named_parameters>
 Error_code extract_quad_mesh(const TriangleMesh& tm, UVMap uv_map, PolygonMesh& quad_mesh, Quad_extraction_result& result,
@@ -308,7 +313,8 @@ Error_code extract_quad_mesh(const TriangleMesh& tm, UVMap uv_map, PolygonMesh& 
   const Error_code code = internal::qex::build_chart_mesh(tm, vpm, uv_map, M);
   if(code != Error_code::SUCCESS)
     return code;
-  const Error_code extraction = internal::qex::extract_from_chart_mesh(M, false, np, quad_mesh, np_out, result, start);
+  const Error_code extraction = internal::qex::extract_from_chart_mesh(
+    M, false, std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value, np, quad_mesh, np_out, result, start);
   result.time_total = internal::qex::seconds(start);
   return extraction;
 }
@@ -325,6 +331,7 @@ Error_code extract_quad_mesh(const TriangleMesh& tm, UVMap uv_map, PolygonMesh& 
 /// exactly against the uv. Everything else (exactness, singular vertices, boundary,
 /// fold-overs, output, named parameters) is as in the other overload.
 ///
+/// \tparam ConcurrencyTag as in the other overload
 /// \tparam TriangleMesh, VertexPointMap the parameters of the bundle
 /// \tparam UVMap as in the other overload
 /// \tparam PolygonMesh a model of `MutableFaceGraph` (the output)
@@ -342,7 +349,8 @@ Error_code extract_quad_mesh(const TriangleMesh& tm, UVMap uv_map, PolygonMesh& 
 ///          of its edge exactly (`result.diagnostic` says which).
 ///
 /// \sa `comb_frame_field()`, `compute_integer_grid_map()`, `Seam_transition`
-template <typename TriangleMesh, typename VertexPointMap, typename UVMap, typename PolygonMesh,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename VertexPointMap,
+          typename UVMap, typename PolygonMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
           typename NamedParametersOut = CGAL::parameters::Default_named_parameters>
 Error_code extract_quad_mesh(const Tangent_bundle<TriangleMesh, VertexPointMap>& bundle, UVMap uv_map,
@@ -360,7 +368,8 @@ Error_code extract_quad_mesh(const Tangent_bundle<TriangleMesh, VertexPointMap>&
       result.diagnostic = "the map's seam transitions do not match the bundle";
     return code;
   }
-  const Error_code extraction = internal::qex::extract_from_chart_mesh(M, true, np, quad_mesh, np_out, result, start);
+  const Error_code extraction = internal::qex::extract_from_chart_mesh(
+    M, true, std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value, np, quad_mesh, np_out, result, start);
   result.time_total = internal::qex::seconds(start);
   return extraction;
 }

@@ -13,6 +13,7 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
+#include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
@@ -22,10 +23,7 @@
 
 #include <array>
 #include <cmath>
-#include <iomanip>
-#include <locale>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -64,32 +62,46 @@ Error_code integer_grid_map_obj_text(const TriangleMesh& tm, UVMap uv_map, Verte
       if(!std::isfinite(uv.first) || !std::isfinite(uv.second))
         return Error_code::NON_FINITE_VALUE;
     }
-  std::ostringstream out;
-  out.imbue(std::locale::classic());
-  out << std::setprecision(17);
-  out << "# integer-grid map: one vt per corner, one uv unit per quad\n";
+  // (numbers as the shortest text that reads back as the same double)
+  using Polyvector_fields::IO::internal::append_double;
+  using Polyvector_fields::IO::internal::append_integer;
+  text = "# integer-grid map: one vt per corner, one uv unit per quad\n";
   Polyvector_fields::internal::Numbering<vertex_descriptor> index;
   for(vertex_descriptor v : vertices(tm))
   {
     index.add(v);
     const auto& p = get(vpm, v);
-    out << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
+    text += "v ";
+    append_double(text, CGAL::to_double(p.x()));
+    text += ' ';
+    append_double(text, CGAL::to_double(p.y()));
+    text += ' ';
+    append_double(text, CGAL::to_double(p.z()));
+    text += '\n';
   }
-  std::size_t corner = 0;
   for(auto f : faces(tm))
     for(auto h : halfedges_around_face(halfedge(f, tm), tm))
     {
       const auto uv = Polyvector_fields::internal::uv_pair(get(uv_map, h));
-      out << "vt " << uv.first << ' ' << uv.second << '\n';
+      text += "vt ";
+      append_double(text, uv.first);
+      text += ' ';
+      append_double(text, uv.second);
+      text += '\n';
     }
+  std::size_t corner = 0;
   for(auto f : faces(tm))
   {
-    out << 'f';
+    text += 'f';
     for(auto h : halfedges_around_face(halfedge(f, tm), tm))
-      out << ' ' << index(target(h, tm)) + 1 << '/' << ++corner;
-    out << '\n';
+    {
+      text += ' ';
+      append_integer(text, index(target(h, tm)) + 1);
+      text += '/';
+      append_integer(text, ++corner);
+    }
+    text += '\n';
   }
-  text = out.str();
   return Error_code::SUCCESS;
 }
 
@@ -126,32 +138,54 @@ Error_code integer_grid_map_vtk_text(const TriangleMesh& tm, UVMap uv_map, Verte
                        (t[1].second - t[0].second) * (t[2].first - t[0].first);
     orientation.push_back(det > 0 ? 1 : (det < 0 ? -1 : 0));
   }
-  std::ostringstream out;
-  out.imbue(std::locale::classic());
-  out << std::setprecision(17);
-  out << "# vtk DataFile Version 3.0\ninteger-grid map\nASCII\nDATASET POLYDATA\n";
-  out << "POINTS " << points.size() << " double\n";
+  using Polyvector_fields::IO::internal::append_double;
+  using Polyvector_fields::IO::internal::append_integer;
+  auto pair_line = [&text](double a, double b, const char* end) {
+    append_double(text, a);
+    text += ' ';
+    append_double(text, b);
+    text += end;
+  };
+  text = "# vtk DataFile Version 3.0\ninteger-grid map\nASCII\nDATASET POLYDATA\n";
+  text += "POINTS " + std::to_string(points.size()) + " double\n";
   for(const auto& p : points)
-    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  {
+    append_double(text, p[0]);
+    text += ' ';
+    pair_line(p[1], p[2], "\n");
+  }
   const std::size_t F = orientation.size();
-  out << "POLYGONS " << F << ' ' << 4 * F << '\n';
+  text += "POLYGONS " + std::to_string(F) + ' ' + std::to_string(4 * F) + '\n';
   for(std::size_t f = 0; f < F; ++f)
-    out << "3 " << 3 * f << ' ' << 3 * f + 1 << ' ' << 3 * f + 2 << '\n';
-  out << "POINT_DATA " << points.size() << '\n';
-  out << "TEXTURE_COORDINATES tcoords 2 double\n";
+  {
+    text += "3 ";
+    append_integer(text, 3 * f);
+    text += ' ';
+    append_integer(text, 3 * f + 1);
+    text += ' ';
+    append_integer(text, 3 * f + 2);
+    text += '\n';
+  }
+  text += "POINT_DATA " + std::to_string(points.size()) + '\n';
+  text += "TEXTURE_COORDINATES tcoords 2 double\n";
   for(const auto& t : uvs)
-    out << t.first << ' ' << t.second << '\n';
-  out << "VECTORS uv double\n";
+    pair_line(t.first, t.second, "\n");
+  text += "VECTORS uv double\n";
   for(const auto& t : uvs)
-    out << t.first << ' ' << t.second << " 0\n";
-  out << "SCALARS vertex_id int 1\nLOOKUP_TABLE default\n";
+    pair_line(t.first, t.second, " 0\n");
+  text += "SCALARS vertex_id int 1\nLOOKUP_TABLE default\n";
   for(std::size_t i : ids)
-    out << i << '\n';
-  out << "CELL_DATA " << F << '\n';
-  out << "SCALARS uv_orientation int 1\nLOOKUP_TABLE default\n";
+  {
+    append_integer(text, i);
+    text += '\n';
+  }
+  text += "CELL_DATA " + std::to_string(F) + '\n';
+  text += "SCALARS uv_orientation int 1\nLOOKUP_TABLE default\n";
   for(int o : orientation)
-    out << o << '\n';
-  text = out.str();
+  {
+    append_integer(text, o);
+    text += '\n';
+  }
   return Error_code::SUCCESS;
 }
 

@@ -14,6 +14,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/IO/internal/atomic_file.h>
 #include <CGAL/Polyvector_fields/IO/internal/planarity_colours.h>
+#include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
 #include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
@@ -69,32 +70,43 @@ Error_code quad_mesh_vtk_text(const PolygonMesh& pm, const NamedParameters& np, 
     total += 1 + degree(f, pm);
     ++face_count;
   }
-  std::ostringstream out;
-  out.imbue(std::locale::classic());
-  out << std::setprecision(17);
-  out << "# vtk DataFile Version 3.0\nquad mesh with planarity\nASCII\nDATASET POLYDATA\n";
-  out << "POINTS " << points.size() << " double\n";
+  // (numbers as the shortest text that reads back as the same double)
+  using Polyvector_fields::IO::internal::append_double;
+  using Polyvector_fields::IO::internal::append_integer;
+  text = "# vtk DataFile Version 3.0\nquad mesh with planarity\nASCII\nDATASET POLYDATA\n";
+  text += "POINTS " + std::to_string(points.size()) + " double\n";
   for(const auto& p : points)
-    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  out << "POLYGONS " << face_count << ' ' << total << '\n';
+  {
+    append_double(text, p[0]);
+    text += ' ';
+    append_double(text, p[1]);
+    text += ' ';
+    append_double(text, p[2]);
+    text += '\n';
+  }
+  text += "POLYGONS " + std::to_string(face_count) + ' ' + std::to_string(total) + '\n';
   std::vector<double> planarity;
+  std::vector<std::array<double, 3> > p;
   for(auto f : faces(pm))
   {
-    out << degree(f, pm);
-    std::vector<std::array<double, 3> > p;
+    append_integer(text, degree(f, pm));
+    p.clear();
     for(auto h : halfedges_around_face(halfedge(f, pm), pm))
     {
       const std::size_t i = index(target(h, pm));
-      out << ' ' << i;
+      text += ' ';
+      append_integer(text, i);
       p.push_back(points[i]);
     }
-    out << '\n';
+    text += '\n';
     planarity.push_back(p.size() == 4 ? quad_planarity(p[0], p[1], p[2], p[3]) : -1.0);
   }
-  out << "CELL_DATA " << face_count << "\nSCALARS planarity double 1\nLOOKUP_TABLE default\n";
+  text += "CELL_DATA " + std::to_string(face_count) + "\nSCALARS planarity double 1\nLOOKUP_TABLE default\n";
   for(double q : planarity)
-    out << q << '\n';
-  text = out.str();
+  {
+    append_double(text, q);
+    text += '\n';
+  }
   return Error_code::SUCCESS;
 }
 

@@ -18,6 +18,7 @@
 #include <CGAL/Polyvector_fields/internal/Curvature/normal_variation_fallback.h>
 #include <CGAL/Polyvector_fields/internal/Curvature/vertex_jet_fits.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -82,7 +83,9 @@ constexpr double flat_curvature_tolerance = 1e-6;
 // The principal curvatures of every face of a valid bundle, in the order of
 // its face numbering, and the number of vertices estimated by the fallback.
 // Returns SUCCESS or CURVATURE_ESTIMATION_FAILED (then `values` is undefined).
-template <typename Bundle, typename Curvature_value>
+// With `CGAL::Parallel_tag`, the jet fits and the faces are shared among
+// threads; the result is the same.
+template <typename ConcurrencyTag, typename Bundle, typename Curvature_value>
 Error_code estimate_face_principal_curvatures(const Bundle& bundle, const Curvature_fit_settings& settings,
                                               std::vector<Curvature_value>& values, std::size_t& fallbacks)
 {
@@ -96,7 +99,7 @@ Error_code estimate_face_principal_curvatures(const Bundle& bundle, const Curvat
 
   std::vector<Curvature_vertex_fit> fits;
   std::vector<char> fallback;
-  fit_vertex_jets(bundle, points, normals, scale_exponent, settings, fits, fallback);
+  fit_vertex_jets<ConcurrencyTag>(bundle, points, normals, scale_exponent, settings, fits, fallback);
 
   fallbacks = 0;
   for(std::size_t vi = 0; vi < nv; ++vi)
@@ -105,9 +108,13 @@ Error_code estimate_face_principal_curvatures(const Bundle& bundle, const Curvat
     return Error_code::CURVATURE_ESTIMATION_FAILED;
 
   std::vector<Curvature_value>(nf).swap(values);
-  for(std::size_t fi = 0; fi < nf; ++fi)
-    if(!average_face_curvature(bundle, fits, fi, values[fi]))
-      return Error_code::CURVATURE_ESTIMATION_FAILED;
+  std::vector<char> finite(nf, 1);
+  for_each_range<ConcurrencyTag>(nf, 4096, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t fi = begin; fi < end; ++fi)
+      finite[fi] = average_face_curvature(bundle, fits, fi, values[fi]) ? 1 : 0;
+  });
+  if(std::find(finite.begin(), finite.end(), 0) != finite.end())
+    return Error_code::CURVATURE_ESTIMATION_FAILED;
 
   // Flat faces: a curvature radius above 1/flat_curvature_tolerance times the
   // bounding-box diagonal is the round-off of the fit on a plane, whose

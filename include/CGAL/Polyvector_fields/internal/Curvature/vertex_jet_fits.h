@@ -14,6 +14,7 @@
 // until it determines the polynomial.
 
 #include <CGAL/Polyvector_fields/face_frames.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 
 #include <CGAL/Eigen_svd.h>
 #include <CGAL/Monge_via_jet_fitting.h>
@@ -215,11 +216,16 @@ struct Curvature_fit_settings
   std::size_t ring_size;
 };
 
+// Vertices per task of the parallel jet fits: each task has its own
+// neighbourhood, whose stamps take one entry per vertex of the mesh.
+constexpr std::size_t curvature_fit_grain = 2048;
+
 // The jet fits of the vertices of faces. `fallback[vi]` is set for a vertex
 // that no fit determines (no normal to orient a fit, a neighbourhood that never
 // determines the polynomial, or a non-finite result): its fit comes from the
-// second estimator.
-template <typename Bundle>
+// second estimator. The fit of a vertex depends on that vertex only, so the
+// result does not depend on `ConcurrencyTag`.
+template <typename ConcurrencyTag, typename Bundle>
 void fit_vertex_jets(const Bundle& bundle, const std::vector<std::array<double, 3> >& points,
                      const Curvature_vertex_normals& normals, int scale_exponent,
                      const Curvature_fit_settings& settings, std::vector<Curvature_vertex_fit>& fits,
@@ -237,67 +243,68 @@ void fit_vertex_jets(const Bundle& bundle, const std::vector<std::array<double, 
 
   fits.assign(nv, Curvature_vertex_fit());
   fallback.assign(nv, 0);
-  Curvature_ring_neighbourhood<Bundle, Local_kernel::Point_3> neighbourhood(bundle, points, normals.in_face);
-  Jet_fitting jet_fitting;
-
-  for(std::size_t vi = 0; vi < nv; ++vi)
-  {
-    if(!normals.in_face[vi])
-      continue;
-
-    const std::array<double, 3>& vertex_normal = normals.normal[vi];
-    const double normal_length = std::sqrt(dot(vertex_normal, vertex_normal));
-    if(!(normal_length > 1e-12 * normals.incident_area[vi]))
+  for_each_range<ConcurrencyTag>(nv, curvature_fit_grain, [&](std::size_t begin, std::size_t end) {
+    Curvature_ring_neighbourhood<Bundle, Local_kernel::Point_3> neighbourhood(bundle, points, normals.in_face);
+    Jet_fitting jet_fitting;
+    for(std::size_t vi = begin; vi < end; ++vi)
     {
-      fallback[vi] = 1;  // no normal to orient a fit
-      continue;
-    }
+      if(!normals.in_face[vi])
+        continue;
 
-    neighbourhood.start(vi);
-    bool exhausted = false;
-    const std::size_t vertex_target = CGAL::is_border(bundle.vertex(vi), tm) ? boundary_target_points : target_points;
-    while(!exhausted && (neighbourhood.rings() < settings.ring_size || neighbourhood.points().size() < vertex_target))
-      exhausted = !neighbourhood.grow_one_ring();
-
-    // Fit; a neighbourhood that does not determine the polynomial (for instance
-    // a fan whose outer vertices lie on one conic) gets one more ring, at most
-    // `curvature_max_extra_rings` times (a strip two vertices wide never
-    // determines a quadric, however far it is grown).
-    Monge_form monge;
-    bool fitted = false;
-    for(std::size_t extra_rings = 0;; ++extra_rings)
-    {
-      if(neighbourhood.points().size() >= minimal_points)
+      const std::array<double, 3>& vertex_normal = normals.normal[vi];
+      const double normal_length = std::sqrt(dot(vertex_normal, vertex_normal));
+      if(!(normal_length > 1e-12 * normals.incident_area[vi]))
       {
-        monge = jet_fitting(neighbourhood.points().begin(), neighbourhood.points().end(), settings.degree_fitting,
-                            settings.degree_monge);
-        fitted = jet_fitting.condition_number() <= curvature_max_condition_number;
-        if(fitted)
+        fallback[vi] = 1;  // no normal to orient a fit
+        continue;
+      }
+
+      neighbourhood.start(vi);
+      bool exhausted = false;
+      const std::size_t vertex_target = CGAL::is_border(bundle.vertex(vi), tm) ? boundary_target_points : target_points;
+      while(!exhausted && (neighbourhood.rings() < settings.ring_size || neighbourhood.points().size() < vertex_target))
+        exhausted = !neighbourhood.grow_one_ring();
+
+      // Fit; a neighbourhood that does not determine the polynomial (for instance
+      // a fan whose outer vertices lie on one conic) gets one more ring, at most
+      // `curvature_max_extra_rings` times (a strip two vertices wide never
+      // determines a quadric, however far it is grown).
+      Monge_form monge;
+      bool fitted = false;
+      for(std::size_t extra_rings = 0;; ++extra_rings)
+      {
+        if(neighbourhood.points().size() >= minimal_points)
+        {
+          monge = jet_fitting(neighbourhood.points().begin(), neighbourhood.points().end(), settings.degree_fitting,
+                              settings.degree_monge);
+          fitted = jet_fitting.condition_number() <= curvature_max_condition_number;
+          if(fitted)
+            break;
+        }
+        if(exhausted || extra_rings == curvature_max_extra_rings || !neighbourhood.grow_one_ring())
           break;
       }
-      if(exhausted || extra_rings == curvature_max_extra_rings || !neighbourhood.grow_one_ring())
-        break;
-    }
-    if(!fitted)
-    {
-      fallback[vi] = 1;
-      continue;
-    }
-    monge.comply_wrt_given_normal(Local_kernel::Vector_3(vertex_normal[0], vertex_normal[1], vertex_normal[2]));
+      if(!fitted)
+      {
+        fallback[vi] = 1;
+        continue;
+      }
+      monge.comply_wrt_given_normal(Local_kernel::Vector_3(vertex_normal[0], vertex_normal[1], vertex_normal[2]));
 
-    Curvature_vertex_fit& fit = fits[vi];
-    const Local_kernel::Vector_3 n = monge.normal_direction();
-    const Local_kernel::Vector_3 d_max = monge.maximal_principal_direction();
-    const Local_kernel::Vector_3 d_min = monge.minimal_principal_direction();
-    fit.normal = { n.x(), n.y(), n.z() };
-    fit.d_max = { d_max.x(), d_max.y(), d_max.z() };
-    fit.d_min = { d_min.x(), d_min.y(), d_min.z() };
-    fit.k_max = std::ldexp(monge.principal_curvatures(0), -scale_exponent);
-    fit.k_min = std::ldexp(monge.principal_curvatures(1), -scale_exponent);
-    if(!curvature_all_finite(fit.normal) || !curvature_all_finite(fit.d_max) || !curvature_all_finite(fit.d_min)
-       || !std::isfinite(fit.k_max) || !std::isfinite(fit.k_min))
-      fallback[vi] = 1;
-  }
+      Curvature_vertex_fit& fit = fits[vi];
+      const Local_kernel::Vector_3 n = monge.normal_direction();
+      const Local_kernel::Vector_3 d_max = monge.maximal_principal_direction();
+      const Local_kernel::Vector_3 d_min = monge.minimal_principal_direction();
+      fit.normal = { n.x(), n.y(), n.z() };
+      fit.d_max = { d_max.x(), d_max.y(), d_max.z() };
+      fit.d_min = { d_min.x(), d_min.y(), d_min.z() };
+      fit.k_max = std::ldexp(monge.principal_curvatures(0), -scale_exponent);
+      fit.k_min = std::ldexp(monge.principal_curvatures(1), -scale_exponent);
+      if(!curvature_all_finite(fit.normal) || !curvature_all_finite(fit.d_max) || !curvature_all_finite(fit.d_min)
+         || !std::isfinite(fit.k_max) || !std::isfinite(fit.k_min))
+        fallback[vi] = 1;
+    }
+  });
 }
 
 } // namespace internal

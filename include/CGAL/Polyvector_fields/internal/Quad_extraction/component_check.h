@@ -19,9 +19,7 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <map>
 #include <numeric>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,10 +68,22 @@ inline std::vector<Component_defect> defective_components(const Chart_mesh& M, c
       for(std::size_t k = 1; k < polygons[f].size(); ++k)
         parent[root(polygons[f][k])] = root(polygons[f][0]);
   // the component of each piece, from the faces under its polygons
-  std::map<std::size_t, std::set<std::size_t> > piece_components;
+  // (by the root point of the piece; sorted, each component once)
+  std::vector<std::vector<std::size_t> > piece_components(points);
   for(std::size_t f = 0; f < polygons.size(); ++f)
     if(!skip[f] && !polygons[f].empty() && polygon_face[f] != npos)
-      piece_components[root(polygons[f][0])].insert(component[polygon_face[f]]);
+    {
+      std::vector<std::size_t>& ks = piece_components[root(polygons[f][0])];
+      const std::size_t k = component[polygon_face[f]];
+      if(ks.empty() || ks.back() != k)
+        ks.push_back(k);
+    }
+  for(std::vector<std::size_t>& ks : piece_components)
+    if(ks.size() > 1)
+    {
+      std::sort(ks.begin(), ks.end());
+      ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+    }
   std::vector<std::size_t> first_face(components, npos);
   for(std::size_t t = 0; t < M.F; ++t)
     if(first_face[component[t]] == npos)
@@ -88,13 +98,13 @@ inline std::vector<Component_defect> defective_components(const Chart_mesh& M, c
   {
     if(skip[f] || polygons[f].empty())
       continue;
-    const auto it = piece_components.find(root(polygons[f][0]));
-    if(it == piece_components.end())
+    const std::vector<std::size_t>& ks = piece_components[root(polygons[f][0])];
+    if(ks.empty())
       continue;  // a piece on no known face: it cannot be told apart, the mesh check below sees it
-    if(it->second.size() > 1)
-      for(std::size_t k : it->second)
+    if(ks.size() > 1)
+      for(std::size_t k : ks)
         flag(k, "its quads share points with those of another component");
-    const std::size_t k = *it->second.begin();
+    const std::size_t k = ks.front();
     if(polygon_face[f] == npos)
       polygon_face[f] = first_face[k];
     members[k].push_back(f);
@@ -103,14 +113,15 @@ inline std::vector<Component_defect> defective_components(const Chart_mesh& M, c
   std::vector<long long> chi(components, 0);
   std::vector<char> closed(components, 1);
   {
-    std::set<std::pair<std::size_t, std::size_t> > seen;  // (vertex, component): a pinch vertex is in several
+    std::vector<std::pair<std::size_t, std::size_t> > seen;  // (vertex, component): a pinch vertex is in several
+    seen.reserve(3 * M.F);
     for(std::size_t t = 0; t < M.F; ++t)
     {
       const std::size_t k = component[t];
       chi[k] += 1;
       for(std::size_t j = 0; j < 3; ++j)
       {
-        const std::size_t e = 3 * t + j, v = M.vertex[e];
+        const std::size_t e = 3 * t + j;
         if(M.opp[e] == npos)
         {
           closed[k] = 0;
@@ -118,33 +129,50 @@ inline std::vector<Component_defect> defective_components(const Chart_mesh& M, c
         }
         else
           chi[k] -= 1;
-        if(seen.insert(std::make_pair(v, k)).second)
-          chi[k] += 2;
+        seen.emplace_back(M.vertex[e], k);
       }
       chi[k] += 1;
     }
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    for(const auto& vk : seen)
+      chi[vk.second] += 2;
     for(long long& c : chi)
       c /= 2;  // 2 (V - E + F)
   }
+  // the local number of each point in the component being checked (npos: none yet)
+  std::vector<std::size_t> local(points, npos);
   for(std::size_t k = 0; k < components; ++k)
   {
     if(members[k].empty() || !why[k].empty())
       continue;
     // the component's polygons, their points numbered from 0
     std::vector<std::vector<std::size_t> > own;
-    std::map<std::size_t, std::size_t> local;
-    std::set<std::size_t> roots;
+    std::vector<std::size_t> numbered;  // the points, in the order of their local numbers
+    std::vector<std::size_t> roots;
     for(std::size_t f : members[k])
     {
       const std::vector<std::size_t>& p = polygons[f];
-      std::set<std::size_t> distinct(p.begin(), p.end());
-      if(distinct.size() != p.size())
+      std::vector<std::size_t> distinct(p);
+      std::sort(distinct.begin(), distinct.end());
+      if(std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end())
         flag(k, "one of its cells passes twice through a point");
       own.emplace_back();
       for(std::size_t v : p)
-        own.back().push_back(local.emplace(v, local.size()).first->second);
-      roots.insert(root(p[0]));
+      {
+        if(local[v] == npos)
+        {
+          local[v] = numbered.size();
+          numbered.push_back(v);
+        }
+        own.back().push_back(local[v]);
+      }
+      roots.push_back(root(p[0]));
     }
+    for(std::size_t v : numbered)
+      local[v] = npos;
+    std::sort(roots.begin(), roots.end());
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
     if(!why[k].empty())
       continue;
     if(roots.size() > 1)
@@ -157,21 +185,29 @@ inline std::vector<Component_defect> defective_components(const Chart_mesh& M, c
       flag(k, "its cells do not form a polygon mesh");
       continue;
     }
-    std::map<std::pair<std::size_t, std::size_t>, int> edge_uses;
-    std::set<std::size_t> used;
+    if(!closed[k])
+      continue;
+    // the edges of the polygons, each once per polygon side along it
+    std::vector<std::pair<std::size_t, std::size_t> > sides;
     for(const std::vector<std::size_t>& p : own)
       for(std::size_t j = 0; j < p.size(); ++j)
       {
         const std::size_t a = p[j], b = p[(j + 1) % p.size()];
-        ++edge_uses[std::make_pair((std::min)(a, b), (std::max)(a, b))];
-        used.insert(a);
+        sides.emplace_back((std::min)(a, b), (std::max)(a, b));
       }
-    if(!closed[k])
-      continue;
-    std::size_t border_edges = 0;
-    for(const auto& e : edge_uses)
-      border_edges += e.second == 1 ? 1 : 0;
-    const long long chi_quads = (long long)(used.size()) - (long long)(edge_uses.size()) + (long long)(own.size());
+    std::sort(sides.begin(), sides.end());
+    std::size_t edges = 0, border_edges = 0;
+    for(std::size_t i = 0; i < sides.size();)
+    {
+      std::size_t j = i;
+      while(j < sides.size() && sides[j] == sides[i])
+        ++j;
+      ++edges;
+      border_edges += j - i == 1 ? 1 : 0;
+      i = j;
+    }
+    // (every point is on a polygon: the points are those numbered)
+    const long long chi_quads = (long long)(numbered.size()) - (long long)(edges) + (long long)(own.size());
     if(border_edges > 0)
       flag(k, "the component is closed, and its quads leave a hole (" + std::to_string(border_edges) + " border edges)");
     else if(chi_quads != chi[k])

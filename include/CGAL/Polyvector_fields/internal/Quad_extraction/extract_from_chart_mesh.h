@@ -201,12 +201,12 @@ Error_code trace_iso_lines(Extractor& X, bool trimmed, std::vector<Trace_end>& e
   return Error_code::SUCCESS;
 }
 
-// Everything after the chart mesh is read, with the named parameters
-// keep_trimmed_boundary and fold_over_repair_rings of np: `result` is a
-// Quad_extraction_result; setup_start is when the setup began (its time
-// includes reading the charts).
+// Everything after the chart mesh is read, with the named parameters of
+// extract_quad_mesh() in np: `result` is a Quad_extraction_result; setup_start
+// is when the setup began (its time includes reading the charts). With
+// `parallel`, the independent queries are shared among threads (same result).
 template <typename NamedParameters, typename PolygonMesh, typename NamedParametersOut, typename Report>
-Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, const NamedParameters& np,
+Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, bool parallel, const NamedParameters& np,
                                    PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result,
                                    Clock::time_point setup_start)
 {
@@ -254,11 +254,15 @@ Error_code extract_from_chart_mesh(Chart_mesh& M, bool given_transitions, const 
   collect_cells(X, trimmed, cells, result);
   result.time_faces = seconds(t);
   t = Clock::now();
-  const double tips = choose_parameter(get_parameter(np, internal_np::tip_snapping_distance), 0.3);
-  const bool split_small = choose_parameter(get_parameter(np, internal_np::split_components_without_cells), false);
-  const double max_distance = choose_parameter(get_parameter(np, internal_np::max_input_distance), 0.0);
-  code = build_quad_mesh(M, W, cut_out ? &cut : nullptr, X, cells, ends, 2 * rings, rings > 0, fill, split_small, tips,
-                         max_distance, quad_mesh, np_out, result);
+  Quad_mesh_settings settings;
+  settings.rings = 2 * rings;
+  settings.repair_folds = rings > 0;
+  settings.fill = fill;
+  settings.split_small = choose_parameter(get_parameter(np, internal_np::split_components_without_cells), false);
+  settings.tip_distance = choose_parameter(get_parameter(np, internal_np::tip_snapping_distance), 0.3);
+  settings.max_distance = choose_parameter(get_parameter(np, internal_np::max_input_distance), 0.0);
+  settings.parallel = parallel;
+  code = build_quad_mesh(M, W, cut_out ? &cut : nullptr, X, cells, ends, settings, quad_mesh, np_out, result);
   if(code != Error_code::SUCCESS)
     return code;
   result.time_output = seconds(t);

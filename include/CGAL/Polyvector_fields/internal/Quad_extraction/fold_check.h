@@ -13,6 +13,7 @@
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_QUAD_EXTRACTION_FOLD_CHECK_H
 
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <CGAL/AABB_traits.h>
@@ -138,24 +139,28 @@ struct Fold_report
 };
 
 // quads[f]: the output vertices of quad f (empty: a face that is not checked); under[f]:
-// the input faces under it; pos: the output vertex positions, moved by the repair.
-inline Fold_report unfold_quads(const Chart_mesh& M, const std::vector<std::vector<std::size_t> >& quads,
-                                const std::vector<std::vector<std::size_t> >& under, std::vector<P3>& pos, bool repair)
+// the input faces under it; pos: the output vertex positions, moved by the repair;
+// check: the surface M in its tree. With `parallel`, the first check of every quad
+// is shared among threads (each quad on its own: the same result).
+inline Fold_report unfold_quads(const Chart_mesh& M, const Fold_check& check,
+                                const std::vector<std::vector<std::size_t> >& quads,
+                                const std::vector<std::vector<std::size_t> >& under, std::vector<P3>& pos, bool repair,
+                                bool parallel)
 {
   Fold_report report;
-  const Fold_check check(M);
   auto folded = [&](std::size_t f) {
     const std::array<P3, 4> q{ { pos[quads[f][0]], pos[quads[f][1]], pos[quads[f][2]], pos[quads[f][3]] } };
     return check.folded(q, under[f]);
   };
   std::vector<char> is_folded(quads.size(), 0);
+  for_each_range(parallel, quads.size(), 512, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
+      is_folded[f] = quads[f].size() == 4 && folded(f) ? 1 : 0;
+  });
   std::vector<std::size_t> list;
   for(std::size_t f = 0; f < quads.size(); ++f)
-    if(quads[f].size() == 4 && folded(f))
-    {
-      is_folded[f] = 1;
+    if(is_folded[f])
       list.push_back(f);
-    }
   report.folded = list.size();
   if(repair && !list.empty())
   {

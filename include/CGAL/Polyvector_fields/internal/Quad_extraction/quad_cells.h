@@ -31,6 +31,7 @@
 #include <array>
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <numeric>
 #include <set>
 #include <string>
@@ -126,22 +127,40 @@ void collect_cells(const Extractor& X, bool trimmed, Cells& C, Report& result)
   }
 }
 
+// What build_quad_mesh() does beyond whole cells: the named parameters of
+// extract_quad_mesh() (fold_over_repair_rings, fill_fold_overs,
+// split_components_without_cells, tip_snapping_distance, max_input_distance)
+// and its concurrency.
+struct Quad_mesh_settings
+{
+  std::size_t rings = 0;      // the regions of holes grown by up to this many rings
+  bool repair_folds = true;   // folded quads are repaired
+  bool fill = true;           // the quads still folded after their repair are cut out and filled
+  bool split_small = false;   // a component without a whole cell gets its triangles split into quads
+  double tip_distance = 0;    // input vertices farther than this many mean quad sides pull a corner (0: none)
+  double max_distance = 0;    // a component whose input is farther from its quads is split into quads (0: none)
+  bool parallel = false;      // the distances of the input to the quads are shared among threads
+};
+
 // Builds the quad mesh (cleared first) from the cells, `ends` being the traces of the
-// iso-line slots; folded quads are repaired if `repair_folds`. `result` is a
+// iso-line slots; folded quads are repaired if `settings.repair_folds`. `result` is a
 // Quad_extraction_result. The cells were extracted from W: the surface M itself, or,
 // with `cut`, M without its fold-overs, whose holes are then filled (whole cells only),
-// the regions grown by up to `rings` rings; with `fill`, the quads still folded after
-// their repair are cut out and filled in the same way, and a component where they cannot
-// be filled gets its triangles split into quads; with `split_small`, so does a
-// component without a whole cell (unless every component is without), and with
-// `max_distance` > 0, a component whose input is farther than that from the quads. Input vertices farther than `tip_distance`
-// mean quad sides from the quads pull a corner onto themselves (0: none).
+// the regions grown by up to `settings.rings` rings; with `settings.fill`, the quads still
+// folded after their repair are cut out and filled in the same way, and a component where
+// they cannot be filled gets its triangles split into quads; with `settings.split_small`,
+// so does a component without a whole cell (unless every component is without), and with
+// `settings.max_distance` > 0, a component whose input is farther than that from the quads.
+// Input vertices farther than `settings.tip_distance` mean quad sides from the quads pull a
+// corner onto themselves (0: none).
 template <typename PolygonMesh, typename NamedParametersOut, typename Report>
 Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_over_cut* cut, const Extractor& X,
-                           const Cells& C, const std::vector<Trace_end>& ends, std::size_t rings, bool repair_folds,
-                           bool fill, bool split_small, double tip_distance, double max_distance, PolygonMesh& quad_mesh,
-                           const NamedParametersOut& np_out, Report& result)
+                           const Cells& C, const std::vector<Trace_end>& ends, const Quad_mesh_settings& settings,
+                           PolygonMesh& quad_mesh, const NamedParametersOut& np_out, Report& result)
 {
+  const std::size_t rings = settings.rings;
+  const bool repair_folds = settings.repair_folds, fill = settings.fill, split_small = settings.split_small;
+  const double tip_distance = settings.tip_distance, max_distance = settings.max_distance;
   // a face of W on the surface M
   auto surface_face = [&](std::size_t w) { return cut ? cut->surface_face[w] : w; };
   // sector i at point P: between slots[i] (outgoing of a face corner) and slots[i+1]
@@ -210,7 +229,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
   // sum of w[i] P[i], exact, rounded once per coordinate: a point that the map puts at a
   // mesh vertex, or at a point with exact coordinates, gets exactly these coordinates
   auto lerp3 = [&](const std::array<double, 3>* P, const Q* w, std::size_t n) {
-    double x[3];
+    P3 x;
     for(int a = 0; a < 3; ++a)
     {
       Q sum(0);
@@ -218,7 +237,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
         sum += w[i] * Q(P[i][a]);
       x[a] = CGAL::to_double(sum);
     }
-    return Out_point(x[0], x[1], x[2]);
+    return x;
   };
   // the point of uv q in the closed triangle f (in its chart), by its barycentric coordinates
   auto in_face = [&](std::size_t f, const P2& q) {
@@ -240,16 +259,15 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
     const std::array<double, 3> PP[3] = { W.point[W.vertex[3 * f]], W.point[W.vertex[3 * f + 1]], W.point[W.vertex[3 * f + 2]] };
     return lerp3(PP, w, 3);
   };
-  std::vector<Out_point> positions;
-  positions.reserve(out_point.size());
-  for(std::size_t p : out_point)
+  // (each point on its own, in doubles: shared among threads with settings.parallel;
+  // the output points are made after, on this thread)
+  std::vector<P3> coordinates(out_point.size());
+  for_each_range(settings.parallel, out_point.size(), 512, [&](std::size_t begin, std::size_t end) {
+  for(std::size_t i = begin; i < end; ++i)
   {
-    const Qpoint& P = X.points[p];
+    const Qpoint& P = X.points[out_point[i]];
     if(P.loc == AT_VERTEX)
-    {
-      const auto& x = W.point[P.elem];
-      positions.push_back(Out_point(x[0], x[1], x[2]));
-    }
+      coordinates[i] = W.point[P.elem];
     else if(P.loc == ON_EDGE || P.loc == BOUNDARY_HIT)
     {
       // parameter along the edge from its lower-index vertex, exact then rounded once
@@ -271,11 +289,16 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
       }
       const std::array<double, 3> PP[2] = { W.point[W.vertex[a]], W.point[W.vertex[b]] };
       const Q w[2] = { Q(1) - lam, lam };
-      positions.push_back(lerp3(PP, w, 2));
+      coordinates[i] = lerp3(PP, w, 2);
     }
     else
-      positions.push_back(in_face(P.elem, P.uv));
+      coordinates[i] = in_face(P.elem, P.uv);
   }
+  });
+  std::vector<Out_point> positions;
+  positions.reserve(coordinates.size());
+  for(const P3& x : coordinates)
+    positions.push_back(Out_point(x[0], x[1], x[2]));
   std::vector<std::vector<std::size_t> > polygons;
   std::vector<std::size_t> polygon_face;  // a surface face under each polygon
   for(std::size_t f = 0; f < C.cells.size(); ++f)
@@ -481,7 +504,10 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
     std::vector<Inner_point> inner;
     const std::size_t failed = subdivide_wrapping_segments(W, X, C.cells, ends, positions.size(), polygons, inner, changed);
     for(const Inner_point& p : inner)
-      positions.push_back(in_face(p.face, p.uv));
+    {
+      const P3 x = in_face(p.face, p.uv);
+      positions.push_back(Out_point(x[0], x[1], x[2]));
+    }
     std::set<std::pair<std::size_t, std::size_t> > edges;
     for(const std::vector<std::size_t>& poly : polygons)
       for(std::size_t k = 0; k < poly.size(); ++k)
@@ -530,9 +556,16 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
       for(std::size_t v = 0; v < positions.size(); ++v)
         pos[v] = { CGAL::to_double(positions[v].x()), CGAL::to_double(positions[v].y()), CGAL::to_double(positions[v].z()) };
     };
+    // the surface in an AABB tree, for the fold check and the tips: made once, when first needed
+    std::unique_ptr<Fold_check> surface;
+    auto surface_check = [&]() -> const Fold_check& {
+      if(!surface)
+        surface.reset(new Fold_check(M));
+      return *surface;
+    };
     auto check_quads = [&]() {
       kept_quads(quads);
-      const Fold_report report = unfold_quads(M, quads, under, pos, repair_folds);
+      const Fold_report report = unfold_quads(M, surface_check(), quads, under, pos, repair_folds, settings.parallel);
       std::vector<std::vector<std::size_t> > corner_quads(positions.size());
       for(std::size_t f = 0; f < quads.size(); ++f)
         for(std::size_t v : quads[f])
@@ -655,6 +688,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
       }
     }
     // input vertices far from the quads (tips finer than the quads) pull a corner onto themselves
+    Tip_report tips;
     {
       double mean_side = 0;
       std::size_t sides = 0;
@@ -666,14 +700,19 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
           ++sides;
         }
       mean_side = sides > 0 ? mean_side / double(sides) : 0;
-      result.snapped_tips = snap_to_tips(M, quads, under, pos, tip_distance * mean_side, repair_folds && tip_distance > 0 && !X.trimmed_).snapped;
+      if(repair_folds && tip_distance > 0 && !X.trimmed_)
+      {
+        tips = snap_to_tips(M, surface_check(), quads, under, pos, tip_distance * mean_side, settings.parallel);
+        result.snapped_tips = tips.snapped;
+      }
     }
     for(std::size_t v = 0; v < positions.size(); ++v)
       if(pos[v][0] != CGAL::to_double(positions[v].x()) || pos[v][1] != CGAL::to_double(positions[v].y()) ||
          pos[v][2] != CGAL::to_double(positions[v].z()))
         positions[v] = Out_point(pos[v][0], pos[v][1], pos[v][2]);
     // how far the input is from the quads; with `max_distance`, a component farther is split into quads
-    std::vector<double> far = input_distances(M, quads, pos, component, component_faces.size());
+    std::vector<double> far =
+      input_distances(M, quads, pos, component, component_faces.size(), settings.parallel, std::move(tips.final_distances));
     if(max_distance > 0 && !X.trimmed_ && *std::max_element(far.begin(), far.end()) > max_distance)
     {
       std::vector<std::size_t> faces_in;
@@ -687,7 +726,7 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
       split_components(faces_in);
       std::vector<std::vector<std::size_t> > now;
       kept_quads(now);
-      far = input_distances(M, now, pos, component, component_faces.size());
+      far = input_distances(M, now, pos, component, component_faces.size(), settings.parallel);
     }
     result.largest_input_distance = far.empty() ? 0 : *std::max_element(far.begin(), far.end());
   }

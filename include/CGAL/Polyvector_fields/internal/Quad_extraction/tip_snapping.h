@@ -15,6 +15,7 @@
 
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/Chart_mesh.h>
 #include <CGAL/Polyvector_fields/internal/Quad_extraction/fold_check.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/internal/types.h>
 
 #include <algorithm>
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -64,15 +66,56 @@ public:
              quad_[std::size_t(hit.second - triangles_.cbegin())] };
   }
 
+  // the distance of the input vertex v to the quads, for each v with `wanted[v]` (0 for the others);
+  // the queries only read the tree, so with `parallel` they are shared among threads
+  std::vector<double> vertex_distances(const Chart_mesh& M, const std::vector<char>& wanted, bool parallel) const
+  {
+    std::vector<double> d(M.V, 0.);
+    for_each_range(parallel, M.V, 1024, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t v = begin; v < end; ++v)
+        if(wanted[v])
+          d[v] = nearest(M.point[v]).first;
+    });
+    return d;
+  }
+
 private:
   std::vector<Triangle> triangles_;
   std::vector<std::size_t> quad_;
   Tree tree_;
 };
 
+// The quads in their tree, and the distance of every vertex of a face of the
+// input to them (0 for the other vertices), for one set of quad positions.
+struct Quad_distances
+{
+  std::unique_ptr<Quad_distance> tree;
+  std::vector<double> vertex;
+};
+
+// The input vertices of faces (the vertices measured by Quad_distances).
+inline std::vector<char> vertices_in_faces(const Chart_mesh& M)
+{
+  std::vector<char> in_face(M.V, 0);
+  for(std::size_t f = 0; f < M.F; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+      in_face[M.vertex[3 * f + k]] = 1;
+  return in_face;
+}
+
+inline Quad_distances quad_distances(const Chart_mesh& M, const std::vector<std::vector<std::size_t> >& quads,
+                                     const std::vector<P3>& pos, bool parallel)
+{
+  Quad_distances d;
+  d.tree.reset(new Quad_distance(quads, pos));
+  d.vertex = d.tree->empty() ? std::vector<double>(M.V, 0.) : d.tree->vertex_distances(M, vertices_in_faces(M), parallel);
+  return d;
+}
+
 struct Tip_report
 {
   std::size_t snapped = 0;        // quad corners moved onto input vertices
+  Quad_distances final_distances; // of the positions after the snapping (no tree: not measured)
 };
 
 // quads[f]: the corners of quad f (empty: not a quad); under[f]: the surface faces under
@@ -82,21 +125,24 @@ struct Tip_report
 // unfolded on the surface and keeps its sides longer than a hundredth of the threshold;
 // each corner moves once, and the corners on the border of the quads never; the vertices on
 // the surface's border pull none.
-inline Tip_report snap_to_tips(const Chart_mesh& M, const std::vector<std::vector<std::size_t> >& quads,
+// check: the surface M in its tree. With `parallel`, the distances are computed on
+// several threads (the same result).
+inline Tip_report snap_to_tips(const Chart_mesh& M, const Fold_check& check,
+                               const std::vector<std::vector<std::size_t> >& quads,
                                std::vector<std::vector<std::size_t> >& under, std::vector<P3>& pos, double threshold,
-                               bool snap)
+                               bool parallel)
 {
   Tip_report report;
-  std::vector<char> used(M.V, 0);
+  // (not the border's vertices: a border left free is the strip that whole cells leave)
+  std::vector<char> pulling(M.V, 0);
   for(std::size_t v = 0; v < M.V; ++v)
-    used[v] = !M.fan[v].empty();
-  if(snap && threshold > 0)
+    pulling[v] = !M.fan[v].empty() && !M.border_vertex[v];
+  if(threshold > 0)
   {
     std::vector<std::vector<std::size_t> > corner_quads(pos.size());
     for(std::size_t f = 0; f < quads.size(); ++f)
       for(std::size_t c : quads[f])
         corner_quads[c].push_back(f);
-    const Fold_check check(M);
     // corners on the border of the quads stay (they keep the quads up to the surface's border)
     std::vector<char> moved(pos.size(), 0);
     {
@@ -110,20 +156,20 @@ inline Tip_report snap_to_tips(const Chart_mesh& M, const std::vector<std::vecto
     }
     for(int pass = 0; pass < 3; ++pass)
     {
-      const Quad_distance distance(quads, pos);
+      Quad_distances measured = quad_distances(M, quads, pos, parallel);
+      const Quad_distance& distance = *measured.tree;
       if(distance.empty())
         break;
       std::vector<std::pair<double, std::size_t> > far;
-      // (not the border's vertices: a border left free is the strip that whole cells leave)
+      const std::vector<double>& d = measured.vertex;
       for(std::size_t v = 0; v < M.V; ++v)
-        if(used[v] && !M.border_vertex[v])
-        {
-          const double d = distance.nearest(M.point[v]).first;
-          if(d > threshold)
-            far.emplace_back(d, v);
-        }
+        if(pulling[v] && d[v] > threshold)
+          far.emplace_back(d[v], v);
       if(far.empty())
+      {
+        report.final_distances = std::move(measured);  // nothing moves any more
         break;
+      }
       std::sort(far.begin(), far.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
       std::vector<char> locked(quads.size(), 0);
       std::size_t snapped = 0;
@@ -185,6 +231,8 @@ inline Tip_report snap_to_tips(const Chart_mesh& M, const std::vector<std::vecto
       }
       report.snapped += snapped;
       if(snapped == 0)
+        report.final_distances = std::move(measured);
+      if(snapped == 0)
         break;
     }
   }
@@ -193,25 +241,36 @@ inline Tip_report snap_to_tips(const Chart_mesh& M, const std::vector<std::vecto
 
 // The largest distance of an input vertex or face centroid to the quads, for each
 // connected component of the input (`component` of each face, `components` of them).
+// Each vertex is measured once, and not again when `known` has a tree (then it holds
+// the distances of these quads and positions); with `parallel`, the distances are
+// computed on several threads (a maximum of the same distances: the same result).
 inline std::vector<double> input_distances(const Chart_mesh& M, const std::vector<std::vector<std::size_t> >& quads,
                                            const std::vector<P3>& pos, const std::vector<std::size_t>& component,
-                                           std::size_t components)
+                                           std::size_t components, bool parallel, Quad_distances known = {})
 {
   std::vector<double> largest(components, 0);
-  const Quad_distance distance(quads, pos);
+  const Quad_distances measured = known.tree ? std::move(known) : quad_distances(M, quads, pos, parallel);
+  const Quad_distance& distance = *measured.tree;
   if(distance.empty())
     return largest;
+  const std::vector<double>& vertex = measured.vertex;
+  std::vector<double> centroid(M.F, 0.);
+  for_each_range(parallel, M.F, 1024, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
+    {
+      P3 c{ 0, 0, 0 };
+      for(std::size_t k = 0; k < 3; ++k)
+        for(int a = 0; a < 3; ++a)
+          c[a] += M.point[M.vertex[3 * f + k]][a] / 3;
+      centroid[f] = distance.nearest(c).first;
+    }
+  });
   for(std::size_t f = 0; f < M.F; ++f)
   {
-    P3 c{ 0, 0, 0 };
+    double& l = largest[component[f]];
+    l = (std::max)(l, centroid[f]);
     for(std::size_t k = 0; k < 3; ++k)
-    {
-      const P3& x = M.point[M.vertex[3 * f + k]];
-      largest[component[f]] = (std::max)(largest[component[f]], distance.nearest(x).first);
-      for(int a = 0; a < 3; ++a)
-        c[a] += x[a] / 3;
-    }
-    largest[component[f]] = (std::max)(largest[component[f]], distance.nearest(c).first);
+      l = (std::max)(l, vertex[M.vertex[3 * f + k]]);
   }
   return largest;
 }

@@ -12,8 +12,9 @@
 // them, or all three, on one integer iso-line of a feature-aligned map (an ear
 // of the border, a triangle across a thin crease): it has no area in the map,
 // whatever the solve. After the split every such triangle has a vertex off
-// the features. Last, each new face gets the value of the face it was cut
-// from, found by an AABB tree of the faces before.
+// the features. Last, each face gets the value of the face it was cut from: the
+// face at its place with the same corners, or else the face nearest to its
+// centroid among the faces before (an AABB tree).
 
 #ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_REFINEMENT_REFINEMENT_H
 #define CGAL_POLYVECTOR_FIELDS_INTERNAL_REFINEMENT_REFINEMENT_H
@@ -137,15 +138,27 @@ Error_code refine_for_quad_size(TriangleMesh& tm, double quad_size, std::vector<
     ++feature_splits;
   }
   Tree tree(before.begin(), before.end());
-  tree.accelerate_distance_queries();
+  // A face that keeps its place in faces(tm) and its three corners (most faces,
+  // untouched by the splits) is the face that was there; the others are found in
+  // the tree (its search structure is built at the first query, if there is one).
   std::vector<std::size_t> origin;
   origin.reserve(num_faces(tm));
+  std::size_t i = 0;
   for(face_descriptor f : faces(tm))
   {
     const auto h = halfedge(f, tm);
-    const Point c = CGAL::centroid(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
-    const auto closest = tree.closest_point_and_primitive(c);
-    origin.push_back(face_origin[std::size_t(closest.second - before.begin())]);
+    const Point p[3] = { get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)) };
+    bool same = false;
+    for(int r = 0; r < 3 && i < F && !same; ++r)
+      same = p[0] == before[i][r] && p[1] == before[i][(r + 1) % 3] && p[2] == before[i][(r + 2) % 3];
+    if(same)
+      origin.push_back(face_origin[i]);
+    else
+    {
+      const auto closest = tree.closest_point_and_primitive(CGAL::centroid(p[0], p[1], p[2]));
+      origin.push_back(face_origin[std::size_t(closest.second - before.begin())]);
+    }
+    ++i;
   }
   face_origin.swap(origin);
   return Error_code::SUCCESS;

@@ -185,7 +185,7 @@ Error_code design_conjugate_frame_field(Polyvector_field<TangentBundle>& field, 
                                                         Conjugate_field_result& r) {
     std::vector<std::array<double, 4> > S;
     std::vector<double> Khat, kmax;
-    const Error_code curvature = internal::face_curvature_of(optimized.tangent_bundle(), np, S, Khat, kmax);
+    const Error_code curvature = internal::face_curvature_of<ConcurrencyTag>(optimized.tangent_bundle(), np, S, Khat, kmax);
     if(curvature != Error_code::SUCCESS)
       return curvature;
     return internal::optimize_conjugate_field<ConcurrencyTag>(optimized, S, Khat, kmax, p, np, r);

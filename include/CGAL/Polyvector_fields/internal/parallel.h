@@ -17,6 +17,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #  include <tbb/blocked_range.h>
+#  include <tbb/enumerable_thread_specific.h>
 #  include <tbb/parallel_for.h>
 #  include <tbb/parallel_invoke.h>
 #endif
@@ -61,6 +62,39 @@ void for_each_range(std::size_t n, std::size_t grain, const Range& range)
 
 // Calls `a()` and `b()`: with `CGAL::Parallel_tag` (and TBB) at the same time,
 // otherwise one after the other. They must not write the same data.
+// for_each_range() with a scratch object per thread: calls
+// `range(scratch, begin, end)`, the scratch made by `make()` the first time a
+// thread runs a range (one scratch in all when the loop runs on the calling
+// thread). For a scratch whose making costs as much as the whole input, such
+// as a stamp per vertex of the mesh: one per range would cost n / grain times
+// that. `range` must leave the scratch fit for any other range, and treat each
+// index independently of the others.
+template <typename ConcurrencyTag, typename Make, typename Range>
+void for_each_range_with_scratch(std::size_t n, std::size_t grain, const Make& make, const Range& range)
+{
+  typedef decltype(make()) Scratch;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && n > grain)
+  {
+    tbb::enumerable_thread_specific<std::unique_ptr<Scratch> > scratch;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        std::unique_ptr<Scratch>& mine = scratch.local();
+                        if(!mine)
+                          mine.reset(new Scratch(make()));
+                        range(*mine, r.begin(), r.end());
+                      });
+    return;
+  }
+#else
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+  (void)grain;
+#endif
+  Scratch scratch = make();
+  range(scratch, std::size_t(0), n);
+}
+
 template <typename ConcurrencyTag, typename A, typename B>
 void invoke_both(const A& a, const B& b)
 {

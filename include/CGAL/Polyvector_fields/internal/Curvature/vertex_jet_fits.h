@@ -216,8 +216,9 @@ struct Curvature_fit_settings
   std::size_t ring_size;
 };
 
-// Vertices per task of the parallel jet fits: each task has its own
-// neighbourhood, whose stamps take one entry per vertex of the mesh.
+// Vertices per task of the parallel jet fits. Each thread has its own
+// neighbourhood, whose stamps take one entry per vertex of the mesh (one per
+// task would make that quadratic in the number of vertices).
 constexpr std::size_t curvature_fit_grain = 2048;
 
 // The jet fits of the vertices of faces. `fallback[vi]` is set for a vertex
@@ -243,8 +244,12 @@ void fit_vertex_jets(const Bundle& bundle, const std::vector<std::array<double, 
 
   fits.assign(nv, Curvature_vertex_fit());
   fallback.assign(nv, 0);
-  for_each_range<ConcurrencyTag>(nv, curvature_fit_grain, [&](std::size_t begin, std::size_t end) {
-    Curvature_ring_neighbourhood<Bundle, Local_kernel::Point_3> neighbourhood(bundle, points, normals.in_face);
+  typedef Curvature_ring_neighbourhood<Bundle, Local_kernel::Point_3> Neighbourhood;
+  // the stamps of a neighbourhood are the vertex's index + 1 (start()): any
+  // vertex may follow any other
+  const auto make_neighbourhood = [&]() { return Neighbourhood(bundle, points, normals.in_face); };
+  for_each_range_with_scratch<ConcurrencyTag>(nv, curvature_fit_grain, make_neighbourhood,
+                                              [&](Neighbourhood& neighbourhood, std::size_t begin, std::size_t end) {
     Jet_fitting jet_fitting;
     for(std::size_t vi = begin; vi < end; ++vi)
     {

@@ -94,8 +94,8 @@ Error_code face_shape_operators(const Bundle& bundle, CurvatureMap curvatures, s
 
 // The shape operators S, normalised |K| and largest |curvature| of the faces
 // of `bundle`: from the named parameter `principal_curvature_map`, or
-// estimated with the other named parameters.
-template <typename Bundle, typename NamedParameters>
+// estimated with the other named parameters (with ConcurrencyTag).
+template <typename ConcurrencyTag, typename Bundle, typename NamedParameters>
 Error_code face_curvature_of(const Bundle& bundle, const NamedParameters& np, std::vector<std::array<double, 4> >& S,
                              std::vector<double>& Khat, std::vector<double>& kmax)
 {
@@ -106,7 +106,7 @@ Error_code face_curvature_of(const Bundle& bundle, const NamedParameters& np, st
   {
     typedef typename CGAL::GetGeomTraits<typename Bundle::Triangle_mesh, NamedParameters>::type Geom_traits;
     std::map<typename Bundle::face_descriptor, Principal_curvatures<typename Geom_traits::Vector_3> > estimated;
-    const Error_code code = estimate_principal_curvatures(bundle, boost::make_assoc_property_map(estimated), np);
+    const Error_code code = estimate_principal_curvatures<ConcurrencyTag>(bundle, boost::make_assoc_property_map(estimated), np);
     if(code != Error_code::SUCCESS)
       return code;
     return face_shape_operators(bundle, boost::make_assoc_property_map(estimated), S, Khat, kmax);

@@ -82,6 +82,9 @@ public:
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
+    // the search tree of the distance queries too, here rather than lazily in
+    // the first query: the queries of folded() come from several threads
+    tree_.accelerate_distance_queries();
   }
 
   // The quad q is folded against the faces it came from: against the normal of an

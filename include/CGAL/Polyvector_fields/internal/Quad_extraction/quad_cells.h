@@ -263,37 +263,37 @@ Error_code build_quad_mesh(const Chart_mesh& M, const Chart_mesh& W, const Fold_
   // the output points are made after, on this thread)
   std::vector<P3> coordinates(out_point.size());
   for_each_range(settings.parallel, out_point.size(), 512, [&](std::size_t begin, std::size_t end) {
-  for(std::size_t i = begin; i < end; ++i)
-  {
-    const Qpoint& P = X.points[out_point[i]];
-    if(P.loc == AT_VERTEX)
-      coordinates[i] = W.point[P.elem];
-    else if(P.loc == ON_EDGE || P.loc == BOUNDARY_HIT)
+    for(std::size_t i = begin; i < end; ++i)
     {
-      // parameter along the edge from its lower-index vertex, exact then rounded once
-      const std::size_t e = P.elem;
-      std::size_t a = e, b = Chart_mesh::next(e);
-      Q lam;
-      if(P.loc == BOUNDARY_HIT)
-        lam = P.lambda;
+      const Qpoint& P = X.points[out_point[i]];
+      if(P.loc == AT_VERTEX)
+        coordinates[i] = W.point[P.elem];
+      else if(P.loc == ON_EDGE || P.loc == BOUNDARY_HIT)
+      {
+        // parameter along the edge from its lower-index vertex, exact then rounded once
+        const std::size_t e = P.elem;
+        std::size_t a = e, b = Chart_mesh::next(e);
+        Q lam;
+        if(P.loc == BOUNDARY_HIT)
+          lam = P.lambda;
+        else
+        {
+          const P2 &A = W.uv[a], &B = W.uv[b];
+          const int coord = A[0] != B[0] ? 0 : 1;
+          lam = (Q(P.uv[coord]) - Q(A[coord])) / (Q(B[coord]) - Q(A[coord]));
+        }
+        if(W.vertex[b] < W.vertex[a])
+        {
+          std::swap(a, b);
+          lam = Q(1) - lam;
+        }
+        const std::array<double, 3> PP[2] = { W.point[W.vertex[a]], W.point[W.vertex[b]] };
+        const Q w[2] = { Q(1) - lam, lam };
+        coordinates[i] = lerp3(PP, w, 2);
+      }
       else
-      {
-        const P2 &A = W.uv[a], &B = W.uv[b];
-        const int coord = A[0] != B[0] ? 0 : 1;
-        lam = (Q(P.uv[coord]) - Q(A[coord])) / (Q(B[coord]) - Q(A[coord]));
-      }
-      if(W.vertex[b] < W.vertex[a])
-      {
-        std::swap(a, b);
-        lam = Q(1) - lam;
-      }
-      const std::array<double, 3> PP[2] = { W.point[W.vertex[a]], W.point[W.vertex[b]] };
-      const Q w[2] = { Q(1) - lam, lam };
-      coordinates[i] = lerp3(PP, w, 2);
+        coordinates[i] = in_face(P.elem, P.uv);
     }
-    else
-      coordinates[i] = in_face(P.elem, P.uv);
-  }
   });
   std::vector<Out_point> positions;
   positions.reserve(coordinates.size());

@@ -231,9 +231,10 @@ inline Tip_report snap_to_tips(const Chart_mesh& M, const Fold_check& check,
       }
       report.snapped += snapped;
       if(snapped == 0)
-        report.final_distances = std::move(measured);
-      if(snapped == 0)
+      {
+        report.final_distances = std::move(measured);  // nothing moved: still these positions
         break;
+      }
     }
   }
   return report;

@@ -45,7 +45,8 @@ STAGES = ("load mesh", "refinement", "frames and connection", "constraints", "cu
 FIELD_STAGES = ("frames and connection", "constraints", "curvature", "design", "frame field", "roots",
                 "singularities")
 # The map's own sub-stages (the program's line `(time: comb and cut ...)`).
-MAP_STAGES = ("comb and cut", "seam reduction", "assembly", "factorization", "integer rounding", "stiffening")
+MAP_STAGES = ("comb and cut", "seam reduction", "assembly", "factorization", "conjugate gradient", "integer rounding",
+              "stiffening")
 # The extraction's own sub-stages (the program's line `(time: charts ...)` under its quad mesh).
 QUAD_STAGES = ("charts", "fold-over repair", "integer points", "tracing", "cells", "quads and their checks")
 # The growth series on bumpy.off: L is one Loop step (x4 faces), S one sqrt(3) step (x3).

@@ -326,11 +326,12 @@ INSTANTIATE_TEST_SUITE_P(Igm, IgmRuns,
                          ::testing::Values("inspired", "inspired_conjugate", "bumpy", "eight", "fandisk", "sphere", "torus"));
 
 // Stiffening rounds keep the integers of the last rounding while that removes
-// flips: one numeric factorization per round, and a rounding only in the
-// first round and after a round that did not lower the flips (round 1
-// always keeps them). With stiffening_keeps_integers(false), every round
-// rounds. Both maps are checked maps without flips (the sphere needs
-// stiffening rounds in both).
+// flips, and a rounding comes only in the first round and after a round that
+// did not lower the flips (round 1 always keeps them). A round that rounds
+// factors the system; one that keeps the integers is solved by conjugate
+// gradient with the last factor (on the sphere, it always converges). With
+// stiffening_keeps_integers(false), every round rounds and factors. Both maps
+// are checked maps without flips (the sphere needs stiffening rounds in both).
 TEST(IgmStiffening, RoundsKeepTheIntegersUnlessAsked)
 {
   std::unique_ptr<Case> c = make_case("sphere");
@@ -346,16 +347,20 @@ TEST(IgmStiffening, RoundsKeepTheIntegersUnlessAsked)
     ASSERT_GE(r.stiffening_rounds, 1u) << keep;
     EXPECT_EQ(r.flipped_faces, 0u) << keep;
     EXPECT_EQ(check_map(*c, uv).flips, 0u) << keep;
-    EXPECT_EQ(r.factorizations, r.stiffening_rounds + 1) << keep;
+    EXPECT_EQ(r.factorizations, r.integer_roundings) << keep;
+    EXPECT_EQ(r.cg_solves, r.stiffening_rounds + 1 - r.integer_roundings) << keep;
+    EXPECT_LE(r.cg_iterations, r.cg_solves * PVF::internal::stiffening_cg_max_iterations) << keep;
     if(keep)
     {
       EXPECT_GE(r.integer_roundings, 1u);
       EXPECT_LE(r.integer_roundings, r.stiffening_rounds);
+      EXPECT_GE(r.cg_solves, 1u);
     }
     else
       EXPECT_EQ(r.integer_roundings, r.stiffening_rounds + 1);
-    std::printf("[ sphere, keep integers %d ] %zu stiffening rounds, %zu roundings, energy ratio %.4f\n", int(keep),
-                r.stiffening_rounds, r.integer_roundings, r.energy_ratio);
+    std::printf("[ sphere, keep integers %d ] %zu stiffening rounds, %zu roundings, %zu by conjugate gradient (%zu "
+                "iterations), energy ratio %.4f\n",
+                int(keep), r.stiffening_rounds, r.integer_roundings, r.cg_solves, r.cg_iterations, r.energy_ratio);
   }
 }
 

@@ -28,12 +28,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,6 +72,48 @@ void box_frame_field(const Mesh& tm, Mesh::Property_map<Face, std::vector<Comple
   }
   ASSERT_EQ(PVF::design_polyvector_field(tm, 4, constraints, field, PVF::parameters::sign_symmetric(true)),
             PVF::Error_code::SUCCESS);
+}
+
+// The map system of the stiffening tests: on a sphere, a frame field of 5
+// random constraints, combed and cut, its seams reduced and its guidance
+// system assembled for quads of 0.2. Made in place (the comb keeps the
+// bundle, which keeps the mesh).
+struct Sphere_map_system
+{
+  typedef PVF::Tangent_bundle<Mesh> Bundle;
+  Mesh tm = sphere(2);
+  std::unique_ptr<Bundle> bundle;
+  PVF::Frame_field_comb<Bundle> comb;
+  PVF::internal::Seamless_reduction R;
+  PVF::internal::Guidance_system S;
+  std::size_t nx = 0, m = 0;
+
+  // call with ASSERT_NO_FATAL_FAILURE
+  void make()
+  {
+    auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
+    ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 5, 2, 11), field,
+                                           PVF::parameters::sign_symmetric(true)),
+              PVF::Error_code::SUCCESS);
+    bundle = std::make_unique<Bundle>(tm);
+    ASSERT_EQ(comb.compute(*bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(PVF::internal::reduce_seamless_variables(comb.corner_mesh(), comb.data(), R), PVF::Error_code::SUCCESS);
+    nx = R.continuous_columns;
+    m = R.integer_columns;
+    ASSERT_GT(m, 0u);
+    PVF::internal::assemble_guidance(comb.corner_mesh(), comb.data(), R, 0.2, nx + m, S);
+  }
+};
+
+// Square roots of row weights from 1 to 1e6 on a third of the faces of M (4
+// rows per face), 1 elsewhere.
+std::vector<double> stiffened_row_weights(std::size_t faces)
+{
+  std::vector<double> row_weight(4 * faces, 1.0);
+  for(std::size_t f = 0; f < faces; f += 3)
+    for(std::size_t k = 0; k < 4; ++k)
+      row_weight[4 * f + k] = std::sqrt(std::pow(10.0, double(f % 7)));
+  return row_weight;
 }
 
 // ---------------------------------------------------------------------------
@@ -136,23 +181,12 @@ TEST(RobustMap, BoxWithoutContinuousUnknowns)
 // the mixed-integer system with them is still solved.
 TEST(RobustMap, StiffeningWeightsStayBoundedAndSolvable)
 {
-  typedef PVF::Tangent_bundle<Mesh> Bundle;
   namespace I = PVF::internal;
-  Mesh tm = sphere(2);
-  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
-  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 5, 2, 11), field, PVF::parameters::sign_symmetric(true)),
-            PVF::Error_code::SUCCESS);
-  const Bundle bundle(tm);
-  PVF::Frame_field_comb<Bundle> comb;
-  ASSERT_EQ(comb.compute(bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
-  const auto& M = comb.corner_mesh();
-  const auto& D = comb.data();
-  I::Seamless_reduction R;
-  ASSERT_EQ(I::reduce_seamless_variables(M, D, R), PVF::Error_code::SUCCESS);
-  const std::size_t nx = R.continuous_columns, m = R.integer_columns;
-  ASSERT_GT(m, 0u);
-  I::Guidance_system S;
-  I::assemble_guidance(M, D, R, 0.2, nx + m, S);
+  Sphere_map_system sys;
+  ASSERT_NO_FATAL_FAILURE(sys.make());
+  const auto& M = sys.comb.corner_mesh();
+  const I::Guidance_system& S = sys.S;
+  const std::size_t nx = sys.nx, m = sys.m;
   std::vector<std::vector<std::size_t> > vertex_faces(M.V);
   for(std::size_t c = 0; c < 3 * M.F; ++c)
     vertex_faces[M.target[c]].push_back(c / 3);
@@ -202,26 +236,13 @@ TEST(RobustMap, StiffeningWeightsStayBoundedAndSolvable)
 // (solve_for_integers()) gives the rounded minimiser again.
 TEST(RobustMap, ReweightedSystemEqualsTheWeightedRows)
 {
-  typedef PVF::Tangent_bundle<Mesh> Bundle;
   namespace I = PVF::internal;
-  Mesh tm = sphere(2);
-  auto field = tm.add_property_map<Face, std::vector<Complex> >("f:field").first;
-  ASSERT_EQ(PVF::design_polyvector_field(tm, 4, random_constraints(tm, 5, 2, 11), field, PVF::parameters::sign_symmetric(true)),
-            PVF::Error_code::SUCCESS);
-  const Bundle bundle(tm);
-  PVF::Frame_field_comb<Bundle> comb;
-  ASSERT_EQ(comb.compute(bundle, field, 10 * CGAL_PI / 180), PVF::Error_code::SUCCESS);
-  const auto& M = comb.corner_mesh();
-  I::Seamless_reduction R;
-  ASSERT_EQ(I::reduce_seamless_variables(M, comb.data(), R), PVF::Error_code::SUCCESS);
-  const std::size_t nx = R.continuous_columns, m = R.integer_columns;
-  ASSERT_GT(m, 0u);
-  I::Guidance_system S;
-  I::assemble_guidance(M, comb.data(), R, 0.2, nx + m, S);
-  std::vector<double> row_weight(4 * M.F, 1.0);
-  for(std::size_t f = 0; f < M.F; f += 3)
-    for(std::size_t k = 0; k < 4; ++k)
-      row_weight[4 * f + k] = std::sqrt(std::pow(10.0, double(f % 7)));  // weights 1 .. 1e6
+  Sphere_map_system sys;
+  ASSERT_NO_FATAL_FAILURE(sys.make());
+  const auto& M = sys.comb.corner_mesh();
+  const I::Guidance_system& S = sys.S;
+  const std::size_t nx = sys.nx, m = sys.m;
+  const std::vector<double> row_weight = stiffened_row_weights(M.F);
   Eigen::SparseMatrix<double> Bw = S.B1;
   Eigen::VectorXd dw = S.d1;
   for(Eigen::Index k = 0; k < Bw.outerSize(); ++k)
@@ -253,6 +274,87 @@ TEST(RobustMap, ReweightedSystemEqualsTheWeightedRows)
   EXPECT_LE((kept - yr1).cwiseAbs().maxCoeff(), 1e-12 * scale);
   // one analysis, three numeric factorizations
   EXPECT_EQ(report.factorizations, 3u);
+}
+
+// A round that keeps the integers after stiffening raised some weights is
+// solved by conjugate gradient preconditioned by the factor of the weights
+// before. Its stopping rule bounds the error in the energy norm of the new
+// weights by 1e-12 sqrt(kappa) of the solution, kappa the largest ratio of a
+// new weight to its factored one (at most 1e6: so 1e-9); held here to a
+// system factored with the new weights, on the sphere's map, with the weights
+// of 4 rounds of stiffen() around a flipped cap. With no iteration allowed,
+// the same round factors again and gives that system's solution to the last
+// bit.
+TEST(RobustMap, StiffeningRoundByConjugateGradientMatchesTheFactoredSolve)
+{
+  namespace I = PVF::internal;
+  typedef I::Mixed_integer_system<PVF::Default_real_sparse_solver> System;
+  Sphere_map_system sys;
+  ASSERT_NO_FATAL_FAILURE(sys.make());
+  const auto& M = sys.comb.corner_mesh();
+  const std::size_t F = M.F;
+  const I::Guidance_system& S = sys.S;
+  const std::size_t nx = sys.nx, m = sys.m;
+  std::vector<std::vector<std::size_t> > vertex_faces(M.V);
+  for(std::size_t c = 0; c < 3 * F; ++c)
+    vertex_faces[M.target[c]].push_back(c / 3);
+  const std::vector<Complex> zero_map(3 * F, Complex(0));
+  std::vector<char> flag(F, 0);
+  for(std::size_t f = 0; f < F; ++f)
+    flag[f] = M.point[M.target[3 * f]][2] > 0.8;  // a cap of the sphere
+  std::vector<double> weight(F, 1.0);
+  for(int round = 0; round < 4; ++round)
+    I::stiffen(M, S, vertex_faces, zero_map, flag, 1.0, weight);
+  const std::vector<double> unit(4 * F, 1.0);
+  std::vector<double> row_weight(4 * F);
+  for(std::size_t k = 0; k < row_weight.size(); ++k)
+    row_weight[k] = std::sqrt(weight[k / 4]);  // never below 1
+  ASSERT_GT(*std::max_element(weight.begin(), weight.end()), 2.0);
+  const std::vector<I::Distinct_points> none;
+  const PVF::Default_real_sparse_solver solver;
+  PVF::Integer_grid_map_result by_cg, factored, fallback;
+  System cg(S.B1, S.d1, nx, m, none, solver), direct(S.B1, S.d1, nx, m, none, solver),
+    no_iteration(S.B1, S.d1, nx, m, none, solver);
+  no_iteration.set_cg_max_iterations(0);
+  Eigen::VectorXd yc, yr, y_cg, y_direct, y_fallback;
+  // the integers of a rounding with unit weights, kept for the stiffened round
+  ASSERT_EQ(cg.set_weights(unit, by_cg), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(cg.round(false, yc, yr, by_cg), PVF::Error_code::SUCCESS);
+  const Eigen::VectorXd n = yr.tail(Eigen::Index(m));
+  ASSERT_EQ(cg.set_weights(row_weight, by_cg, false), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(cg.solve_for_integers(n, y_cg, by_cg), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(by_cg.factorizations, 1u);
+  EXPECT_EQ(by_cg.cg_solves, 1u);
+  EXPECT_GE(by_cg.cg_iterations, 1u);
+  EXPECT_LE(by_cg.cg_iterations, I::stiffening_cg_max_iterations);
+  ASSERT_EQ(direct.set_weights(row_weight, factored), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(direct.solve_for_integers(n, y_direct, factored), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(factored.cg_solves, 0u);
+  EXPECT_EQ(y_cg.tail(Eigen::Index(m)), n);
+  // |x - x*|_K with K = Bx^T W Bx, as the weighted rows' norm of Bx (x - x*)
+  const Eigen::SparseMatrix<double> Bx = S.B1.leftCols(Eigen::Index(nx));
+  auto energy_norm = [&](const Eigen::VectorXd& x) {
+    const Eigen::VectorXd r = Bx * x;
+    double sum = 0;
+    for(Eigen::Index k = 0; k < r.size(); ++k)
+      sum += std::pow(row_weight[std::size_t(k)] * r[k], 2);
+    return std::sqrt(sum);
+  };
+  const Eigen::VectorXd x_direct = y_direct.head(Eigen::Index(nx));
+  const double error = energy_norm(Eigen::VectorXd(y_cg.head(Eigen::Index(nx)) - x_direct)),
+               size = energy_norm(x_direct);
+  ASSERT_GT(size, 0);
+  EXPECT_LE(error, 1e-9 * size);
+  std::printf("[ conjugate gradient ] %zu iterations, energy-norm error %.3g of the solution\n", by_cg.cg_iterations,
+              error / size);
+  // no iteration allowed: factored again, the factored system's solution
+  ASSERT_EQ(no_iteration.set_weights(unit, fallback), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(no_iteration.round(false, yc, yr, fallback), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(no_iteration.set_weights(row_weight, fallback, false), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(no_iteration.solve_for_integers(n, y_fallback, fallback), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(fallback.factorizations, 2u);
+  EXPECT_EQ(fallback.cg_solves, 0u);
+  EXPECT_EQ(y_fallback, y_direct);
 }
 
 // Two integer points that round to the same point fold every face between

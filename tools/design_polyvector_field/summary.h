@@ -169,7 +169,8 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
               << " flipped faces";
     if(r.stiffening_rounds > 0)
       std::cout << " after " << r.stiffening_rounds << " stiffening rounds (" << r.integer_roundings - 1
-                << " of them rounding the integers again)";
+                << " of them rounding the integers again, " << r.cg_solves << " solved by conjugate gradient in "
+                << r.cg_iterations << " iterations)";
     std::cout << "; worst seam residual " << r.max_seam_residual << "; energy rounded/continuous " << r.energy_ratio;
     if(r.comb.clamped_faces > 0)
       std::cout << "; " << r.comb.clamped_faces << " near-degenerate frames clamped";
@@ -194,7 +195,8 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     const auto old_precision = std::cout.precision();
     std::cout << std::fixed << std::setprecision(3) << "\n                (time: comb and cut " << r.time_comb
               << ", seam reduction " << r.time_reduction << ", assembly " << r.time_assembly << ", factorization "
-              << r.time_factorization << ", integer rounding " << r.time_schur + r.time_rounding << ", stiffening "
+              << r.time_factorization << ", conjugate gradient " << r.time_cg << ", integer rounding "
+              << r.time_schur + r.time_rounding << ", stiffening "
               << r.time_stiffening << ")\n";
     std::cout.flags(old_flags);
     std::cout.precision(old_precision);

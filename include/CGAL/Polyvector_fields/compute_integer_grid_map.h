@@ -103,6 +103,8 @@ struct Integer_grid_map_result
   std::size_t stiffening_rounds = 0;      ///< solves after the first one
   std::size_t integer_roundings = 0;      ///< solves that rounded the integer unknowns (the first, and the stiffening rounds after one that did not remove flips); the other rounds keep the integers and solve for the continuous unknowns only
   std::size_t factorizations = 0;         ///< numeric factorizations of the sparse system
+  std::size_t cg_solves = 0;              ///< stiffening rounds that kept the integers and were solved by conjugate gradient, preconditioned by an earlier factorization, instead of a new one (see <b>Solve</b>)
+  std::size_t cg_iterations = 0;          ///< their iterations, in all
   std::size_t integer_point_collisions_avoided = 0;  ///< roundings that took the other integer next to the minimiser, so that two integer points of one face (singular vertices, feature corners) did not meet (all rounds)
   double target_edge_length = 0;          ///< h used
   double mean_edge_length = 0;            ///< of the mesh
@@ -121,6 +123,7 @@ struct Integer_grid_map_result
   double time_factorization = 0;  ///< sparse factorizations (all rounds)
   double time_schur = 0;          ///< solves for the Schur complement of the integer unknowns (all rounds)
   double time_rounding = 0;       ///< greedy rounding with updates (all rounds)
+  double time_cg = 0;             ///< conjugate gradient (all rounds)
   double time_stiffening = 0;     ///< everything spent in rounds after the first
   double time_output = 0;         ///< snapping, checks and writing the map
   double time_total = 0;  ///< the whole call
@@ -350,9 +353,15 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// a larger weight and the problem is solved again, at most
 /// `number_of_iterations` times (stiffening); the round with the fewest flips is kept.
 /// A stiffening round keeps the integers of the last rounding and solves for
-/// the continuous unknowns only (the normal equations are updated on the
-/// reweighted faces, and factored again on the ordering of the first round);
-/// after a round that did not lower the number of flips, the next one rounds
+/// the continuous unknowns only: the normal equations are updated on the
+/// reweighted faces and, since stiffening only raises weights, solved by
+/// conjugate gradient preconditioned by the factorization of the last round
+/// that rounded (`cg_solves`, `cg_iterations`). Its stopping rule,
+/// `r^T M^-1 r <= 10^-24 b^T M^-1 b` with `M` the factored matrix, bounds the
+/// error in the energy norm by `10^-12 kappa^(1/2)` of the solution, `kappa`
+/// the largest ratio of a weight to its factored value (at most `10^6`); after
+/// 30 iterations without convergence the system is factored again, on the
+/// ordering of the first round, and solved directly. After a round that did not lower the number of flips, the next one rounds
 /// the integers again (`integer_roundings`). The rounds end after 8 rounds in
 /// a row without fewer flips than the best one. When faces still flip, the
 /// rounds start again from unit weights and round the integers in every round

@@ -13,7 +13,9 @@
 // y = (x continuous, n integer). The continuous block is factored once
 // through the solver's Sparse_factorization; the integer unknowns are eliminated through
 // their Schur complement and rounded greedily, closest to an integer first,
-// with an exact update of the small dense system after each rounding.
+// with an exact update of the small dense system after each rounding. A round
+// that keeps the integers and only raises weights is solved by conjugate
+// gradient, preconditioned by the factor of the last factored weights.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
@@ -96,6 +98,23 @@ private:
   typename Factorization::Solver_scope m_scope;
   Factorization m_factorization;
 };
+
+// A stiffening round that keeps the integers changes only weights, and only
+// upwards (stiffen() multiplies them by at least 1, up to
+// max_stiffening_weight): its continuous block K is at least the block M of
+// the weights last factored (K - M is positive semidefinite). Conjugate
+// gradient on K x = b preconditioned by M's factor then converges in few
+// iterations (M^-1 K has eigenvalues of at least 1, and only the reweighted
+// rows move them), and its stopping rule bounds the error: from
+// r^T M^-1 r <= tol^2 b^T M^-1 b follows |x - x*|_K <= tol kappa^(1/2) |x*|_K,
+// with kappa at most the largest ratio of a row's weight to its factored
+// weight (so at most 1e6). Measured on the map of bumpy.off after three Loop
+// steps (160k faces), 16 to 21 iterations per round at 1e-12, each a solve
+// with the factor: about 0.45 s per round against 0.75 s for a
+// refactorization and a solve. After stiffening_cg_max_iterations without
+// convergence, K is factored and solved directly.
+constexpr double stiffening_cg_tolerance = 1e-12;
+constexpr std::size_t stiffening_cg_max_iterations = 30;
 
 inline double seconds_since(std::chrono::steady_clock::time_point t)
 {
@@ -182,7 +201,10 @@ private:
 // the normal equations for the current weights and factors the continuous
 // block; then round() rounds the integers (Schur complement and greedy
 // rounding), and solve_for_integers() gives the continuous unknowns for
-// integers already chosen (one solve, no rounding).
+// integers already chosen (one solve, no rounding). set_weights() with
+// factor = false, for weights that are nowhere lower than the factored ones,
+// keeps the factor: solve_for_integers() then runs conjugate gradient
+// preconditioned by it, from its last solution (see stiffening_cg_tolerance).
 //
 // The normal equations of unit weights are made once; a call of
 // set_weights() adds (w_r - 1) B_r^T B_r for the rows whose weight is not 1
@@ -199,9 +221,11 @@ public:
     : m_B1(B1), m_d1(d1), m_nx(nx), m_m(m), m_distinct(distinct), m_prototype(prototype), m_system(prototype)
   {}
 
-  // `row_weight` holds w_r^(1/2) per row of B.
+  // `row_weight` holds w_r^(1/2) per row of B. With factor = false (and a
+  // factor already made), the weights must be nowhere lower than those of the
+  // last factorization.
   template <typename Report>
-  Error_code set_weights(const std::vector<double>& row_weight, Report& result)
+  Error_code set_weights(const std::vector<double>& row_weight, Report& result, bool factor = true)
   {
     auto t = std::chrono::steady_clock::now();
     if(!m_unit_made)
@@ -240,35 +264,53 @@ public:
     }
     result.time_assembly += seconds_since(t);
 
-    t = std::chrono::steady_clock::now();
-    if(!m_analyzed)
-    {
-      if(!m_system.analyze(m_Kxx))
-        return Error_code::SOLVER_FAILURE;
-      m_analyzed = true;
-    }
-    if(!m_system.factorize(m_Kxx))
-      return Error_code::SOLVER_FAILURE;
-    ++result.factorizations;
-    result.time_factorization += seconds_since(t);
-    return Error_code::SUCCESS;
+    m_stale = m_factored && !factor;
+    return m_stale ? Error_code::SUCCESS : factor_block(result);
   }
 
-  // y = (Kxx^-1 (bx - Kxn n), n) for the integers n.
+  // y = (Kxx^-1 (bx - Kxn n), n) for the integers n: with the factor of the
+  // current weights, one solve; with an earlier one, conjugate gradient
+  // preconditioned by it, or a new factorization and one solve if that does
+  // not converge within cg_max_iterations.
   template <typename Report>
   Error_code solve_for_integers(const Eigen::VectorXd& n, Eigen::VectorXd& y, Report& result)
   {
-    const auto t = std::chrono::steady_clock::now();
+    auto t = std::chrono::steady_clock::now();
+    const Eigen::VectorXd b = m_bx - m_Kxn * n;
+    y.resize(Eigen::Index(m_nx + m_m));
+    y.tail(Eigen::Index(m_m)) = n;
+    if(m_stale)
+    {
+      Eigen::VectorXd x = m_last_x;
+      std::size_t iterations = 0;
+      const bool converged = preconditioned_cg(b, x, iterations);
+      result.time_cg += seconds_since(t);
+      if(converged)
+      {
+        ++result.cg_solves;
+        result.cg_iterations += iterations;
+        m_last_x = x;
+        y.head(Eigen::Index(m_nx)) = x;
+        return Error_code::SUCCESS;
+      }
+      const Error_code code = factor_block(result);
+      if(code != Error_code::SUCCESS)
+        return code;
+      t = std::chrono::steady_clock::now();
+    }
     Eigen::MatrixXd sol;
-    const bool ok = m_system.solve(Eigen::VectorXd(m_bx - m_Kxn * n), sol);
+    const bool ok = m_system.solve(b, sol);
     result.time_schur += seconds_since(t);
     if(!ok)
       return Error_code::SOLVER_FAILURE;
-    y.resize(Eigen::Index(m_nx + m_m));
-    y.head(Eigen::Index(m_nx)) = sol.col(0);
-    y.tail(Eigen::Index(m_m)) = n;
+    m_last_x = sol.col(0);
+    y.head(Eigen::Index(m_nx)) = m_last_x;
     return Error_code::SUCCESS;
   }
+
+  // at most this many iterations of conjugate gradient per solve (0: every
+  // solve with a stale factor factors again)
+  void set_cg_max_iterations(std::size_t n) { m_cg_max_iterations = n; }
 
   // Rounds the integers for the current weights: y_continuous is the
   // unrounded minimiser, y_rounded the minimiser with the rounded integers.
@@ -278,6 +320,59 @@ public:
   Error_code round(bool refactor_per_rounding, Eigen::VectorXd& y_continuous, Eigen::VectorXd& y_rounded, Report& result);
 
 private:
+  // the numeric factorization of the continuous block (the symbolic analysis
+  // once)
+  template <typename Report>
+  Error_code factor_block(Report& result)
+  {
+    const auto t = std::chrono::steady_clock::now();
+    if(!m_analyzed)
+    {
+      if(!m_system.analyze(m_Kxx))
+        return Error_code::SOLVER_FAILURE;
+      m_analyzed = true;
+    }
+    if(!m_system.factorize(m_Kxx))
+      return Error_code::SOLVER_FAILURE;
+    m_factored = true;
+    m_stale = false;
+    ++result.factorizations;
+    result.time_factorization += seconds_since(t);
+    return Error_code::SUCCESS;
+  }
+
+  // Conjugate gradient on Kxx x = b from x, preconditioned by the factor of
+  // earlier weights (see stiffening_cg_tolerance); whether it converged.
+  bool preconditioned_cg(const Eigen::VectorXd& b, Eigen::VectorXd& x, std::size_t& iterations)
+  {
+    iterations = 0;
+    Eigen::MatrixXd z;
+    if(x.size() != b.size() || !m_system.solve(b, z))
+      return false;
+    const double tolerance2 = stiffening_cg_tolerance * stiffening_cg_tolerance * b.dot(z.col(0));
+    Eigen::VectorXd r = b - m_Kxx * x;
+    if(!m_system.solve(r, z))
+      return false;
+    Eigen::VectorXd p = z.col(0), q;
+    double rz = r.dot(p);
+    while(!(rz <= tolerance2))
+    {
+      if(iterations == m_cg_max_iterations || !std::isfinite(rz))
+        return false;
+      ++iterations;
+      q.noalias() = m_Kxx * p;
+      const double alpha = rz / p.dot(q);
+      x += alpha * p;
+      r -= alpha * q;
+      if(!m_system.solve(r, z))
+        return false;
+      const double rz_next = r.dot(z.col(0));
+      p = z.col(0) + (rz_next / rz) * p;
+      rz = rz_next;
+    }
+    return x.allFinite();
+  }
+
   // The normal equations of unit weights, by blocks: the products are not
   // pruned, so that each block holds every entry that a weight can change.
   // Eigen's sparse product reads memory it does not own when a factor has no
@@ -320,6 +415,10 @@ private:
   const SolverTraits& m_prototype;
   Factored_real_system<SolverTraits> m_system;
   bool m_unit_made = false, m_analyzed = false;
+  bool m_factored = false;  // a numeric factorization was made
+  bool m_stale = false;     // of other (lower) weights than the current ones
+  std::size_t m_cg_max_iterations = stiffening_cg_max_iterations;
+  Eigen::VectorXd m_last_x;  // the continuous unknowns of the last solve
   Row_matrix m_rows;                                  // B1 by rows
   Eigen::SparseMatrix<double> m_Kxx1, m_Kxn1, m_Kxx, m_Kxn;
   Eigen::MatrixXd m_Knn1, m_Knn;

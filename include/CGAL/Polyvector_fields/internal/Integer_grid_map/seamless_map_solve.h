@@ -516,7 +516,9 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
       integers = y_round.tail(Eigen::Index(m));
     }
     else
-      code = system.set_weights(row_weight, result);
+      // a round that keeps the integers only raised weights since the last
+      // factorization: the factor stays, as conjugate gradient's preconditioner
+      code = system.set_weights(row_weight, result, round_integers);
     if(code == Error_code::SUCCESS && !reused)
     {
       if(round_integers)

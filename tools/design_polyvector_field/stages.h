@@ -101,7 +101,8 @@ struct Quad_size
   double h = 0;                // the quad size, in mesh units
   bool from_mean_edge = false; // the default rule chose the mean edge length (the map's own default)
   bool default_size = false;   // neither --edge-length nor --quads
-  double scale = 1;            // of the default size (made finer when the quads are too far from the surface)
+  double scale = 1;            // of the default size (made finer when the quads are too far from the surface,
+                               // or cannot fill the map's fold-overs)
   std::size_t faces_before = 0, faces_after = 0;
   bool refined() const { return faces_after != faces_before; }
 };
@@ -111,6 +112,10 @@ struct Quad_size
 struct Sizing
 {
   std::vector<std::pair<double, double> > tries;  // (quad size, deviation) of the sizes made finer
+  // the sizes made finer because the extraction could not fill the map's
+  // fold-overs there: (quad size, whether a quad stayed folded against the
+  // surface; otherwise a component was split into quads on its triangles)
+  std::vector<std::pair<double, bool> > unfilled;
   double deviation = -1;  // of the quads kept; < 0: not measured
   double split_at = -1;   // >= 0: the deviation at the last size, before the far components were split
   double bound = 0;
@@ -599,6 +604,9 @@ struct Quad_stage
   PVF::Quad_extraction_result extraction;
   PVF::Planarity_result before, after;
   bool planarized = false;
+  // the extraction left a quad folded against the surface (FOLDED_QUAD) and
+  // was allowed to say so rather than fail (make_quad_mesh()'s may_refine)
+  bool folded = false;
   PVF::Planarization_result planarization;
   PVF::Error_code planarization_code = PVF::Error_code::SUCCESS;
   double time_extraction = 0, time_planarization = 0;
@@ -608,8 +616,17 @@ struct Quad_stage
 // fold-overs of a map that can be computed again (may_retry).
 // `max_distance` > 0: the components of the surface farther than that from their quads
 // are split into quads (extract_quad_mesh()'s max_input_distance).
+// may_refine: a quad left folded against the surface sets q.folded and
+// makes nothing, instead of an error (another quad size will be tried).
+// Components of the quad mesh split into quads on their triangles because
+// the extraction could not fill the fold-overs of their map.
+std::size_t unfilled_components(const PVF::Quad_extraction_result& e)
+{
+  return e.split_components - e.split_small_components - e.split_far_components - e.split_defective_components;
+}
+
 bool make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, const Parametrization& param, Quad_stage& q,
-                    Stopwatch& clock, bool may_retry = false, double max_distance = 0)
+                    Stopwatch& clock, bool may_retry = false, double max_distance = 0, bool may_refine = false)
 {
   if(o.out_quads.empty())
     return true;
@@ -623,6 +640,12 @@ bool make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, cons
   {
     clock.lap("quad mesh");
     return false;
+  }
+  if(extracted == PVF::Error_code::FOLDED_QUAD && may_refine)
+  {
+    q.folded = true;
+    clock.lap("quad mesh");
+    return true;
   }
   check(extracted, "quad mesh", q.extraction.diagnostic);
   q.time_extraction = extraction_timer.elapsed();

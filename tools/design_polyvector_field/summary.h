@@ -102,18 +102,29 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
   }
   else if(r.isolated_vertices)
     std::cout << "note            " << r.isolated_vertices << " isolated vertices are ignored\n";
-  if(!sizing.tries.empty() || sizing.split_at >= 0)
+  if(!sizing.tries.empty() || !sizing.unfilled.empty() || sizing.split_at >= 0)
   {
     std::cout << "quad size       " << size.h;
+    if(!sizing.unfilled.empty())
+    {
+      std::cout << ", the default made finer " << sizing.unfilled.size()
+                << " times because the quads could not fill the map's fold-overs: at";
+      for(std::size_t i = 0; i < sizing.unfilled.size(); ++i)
+        std::cout << (i ? "," : "") << " " << sizing.unfilled[i].first
+                  << (sizing.unfilled[i].second ? " a quad stayed folded against the surface"
+                                                : " a component would have been split into quads on its triangles");
+    }
     if(!sizing.tries.empty())
     {
-      std::cout << ", the default made finer " << sizing.tries.size() << " times: at";
+      std::cout << (sizing.unfilled.empty() ? ", the default made finer " : "; made finer ") << sizing.tries.size()
+                << " times: at";
       for(std::size_t i = 0; i < sizing.tries.size(); ++i)
         std::cout << (i ? "," : "") << " " << sizing.tries[i].first << " an input point was "
                   << 100 * sizing.tries[i].second << "%";
       std::cout << " of the bounding-box diagonal from the quads";
     }
-    std::cout << " (bound " << 100 * sizing.bound << "%)";
+    if(!sizing.tries.empty() || sizing.split_at >= 0)
+      std::cout << " (bound " << 100 * sizing.bound << "%)";
     if(sizing.split_at >= 0)
       std::cout << "; at " << size.h << ", " << 100 * sizing.split_at
                 << "%: the components farther than the bound split into quads";

@@ -349,7 +349,6 @@ TEST(IgmStiffening, RoundsKeepTheIntegersUnlessAsked)
     EXPECT_EQ(check_map(*c, uv).flips, 0u) << keep;
     EXPECT_EQ(r.factorizations, r.integer_roundings) << keep;
     EXPECT_EQ(r.cg_solves, r.stiffening_rounds + 1 - r.integer_roundings) << keep;
-    EXPECT_LE(r.cg_iterations, r.cg_solves * PVF::internal::stiffening_cg_max_iterations) << keep;
     if(keep)
     {
       EXPECT_GE(r.integer_roundings, 1u);

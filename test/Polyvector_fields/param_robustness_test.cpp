@@ -280,11 +280,14 @@ TEST(RobustMap, ReweightedSystemEqualsTheWeightedRows)
 // solved by conjugate gradient preconditioned by the factor of the weights
 // before. Its stopping rule bounds the error in the energy norm of the new
 // weights by 1e-12 sqrt(kappa) of the solution, kappa the largest ratio of a
-// new weight to its factored one (at most 1e6: so 1e-9); held here to a
-// system factored with the new weights, on the sphere's map, with the weights
-// of 4 rounds of stiffen() around a flipped cap. With no iteration allowed,
-// the same round factors again and gives that system's solution to the last
-// bit.
+// new weight to its factored one; held here to a system factored with the
+// new weights, on the sphere's map:
+// - the weights of 4 rounds of stiffen() around a flipped cap (kappa 16);
+// - weights from 1 to 1e6 on a third of the faces: within the bound, or,
+//   beyond 30 iterations, factored again and that system's solution to the
+//   last bit;
+// - no iteration allowed: factored again, the same solution to the last bit;
+// - a weight lower than at the factorization: factored, not iterated.
 TEST(RobustMap, StiffeningRoundByConjugateGradientMatchesTheFactoredSolve)
 {
   namespace I = PVF::internal;
@@ -305,56 +308,74 @@ TEST(RobustMap, StiffeningRoundByConjugateGradientMatchesTheFactoredSolve)
   std::vector<double> weight(F, 1.0);
   for(int round = 0; round < 4; ++round)
     I::stiffen(M, S, vertex_faces, zero_map, flag, 1.0, weight);
-  const std::vector<double> unit(4 * F, 1.0);
-  std::vector<double> row_weight(4 * F);
-  for(std::size_t k = 0; k < row_weight.size(); ++k)
-    row_weight[k] = std::sqrt(weight[k / 4]);  // never below 1
-  ASSERT_GT(*std::max_element(weight.begin(), weight.end()), 2.0);
+  const double kappa = *std::max_element(weight.begin(), weight.end());  // factored with unit weights
+  ASSERT_GT(kappa, 2.0);
+  const std::vector<double> unit(4 * F, 1.0), large = stiffened_row_weights(F);
+  std::vector<double> stiffened(4 * F);
+  for(std::size_t k = 0; k < stiffened.size(); ++k)
+    stiffened[k] = std::sqrt(weight[k / 4]);
   const std::vector<I::Distinct_points> none;
   const PVF::Default_real_sparse_solver solver;
-  PVF::Integer_grid_map_result by_cg, factored, fallback;
-  System cg(S.B1, S.d1, nx, m, none, solver), direct(S.B1, S.d1, nx, m, none, solver),
-    no_iteration(S.B1, S.d1, nx, m, none, solver);
-  no_iteration.set_cg_max_iterations(0);
-  Eigen::VectorXd yc, yr, y_cg, y_direct, y_fallback;
-  // the integers of a rounding with unit weights, kept for the stiffened round
-  ASSERT_EQ(cg.set_weights(unit, by_cg), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(cg.round(false, yc, yr, by_cg), PVF::Error_code::SUCCESS);
-  const Eigen::VectorXd n = yr.tail(Eigen::Index(m));
-  ASSERT_EQ(cg.set_weights(row_weight, by_cg, false), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(cg.solve_for_integers(n, y_cg, by_cg), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(by_cg.factorizations, 1u);
-  EXPECT_EQ(by_cg.cg_solves, 1u);
-  EXPECT_GE(by_cg.cg_iterations, 1u);
-  EXPECT_LE(by_cg.cg_iterations, I::stiffening_cg_max_iterations);
-  ASSERT_EQ(direct.set_weights(row_weight, factored), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(direct.solve_for_integers(n, y_direct, factored), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(factored.cg_solves, 0u);
-  EXPECT_EQ(y_cg.tail(Eigen::Index(m)), n);
-  // |x - x*|_K with K = Bx^T W Bx, as the weighted rows' norm of Bx (x - x*)
   const Eigen::SparseMatrix<double> Bx = S.B1.leftCols(Eigen::Index(nx));
-  auto energy_norm = [&](const Eigen::VectorXd& x) {
+
+  // |x|_K with K = Bx^T W Bx, as the weighted rows' norm of Bx x
+  auto energy_norm = [&](const std::vector<double>& row_weight, const Eigen::VectorXd& x) {
     const Eigen::VectorXd r = Bx * x;
     double sum = 0;
     for(Eigen::Index k = 0; k < r.size(); ++k)
       sum += std::pow(row_weight[std::size_t(k)] * r[k], 2);
     return std::sqrt(sum);
   };
-  const Eigen::VectorXd x_direct = y_direct.head(Eigen::Index(nx));
-  const double error = energy_norm(Eigen::VectorXd(y_cg.head(Eigen::Index(nx)) - x_direct)),
-               size = energy_norm(x_direct);
-  ASSERT_GT(size, 0);
-  EXPECT_LE(error, 1e-9 * size);
-  std::printf("[ conjugate gradient ] %zu iterations, energy-norm error %.3g of the solution\n", by_cg.cg_iterations,
-              error / size);
-  // no iteration allowed: factored again, the factored system's solution
-  ASSERT_EQ(no_iteration.set_weights(unit, fallback), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(no_iteration.round(false, yc, yr, fallback), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(no_iteration.set_weights(row_weight, fallback, false), PVF::Error_code::SUCCESS);
-  ASSERT_EQ(no_iteration.solve_for_integers(n, y_fallback, fallback), PVF::Error_code::SUCCESS);
-  EXPECT_EQ(fallback.factorizations, 2u);
-  EXPECT_EQ(fallback.cg_solves, 0u);
-  EXPECT_EQ(y_fallback, y_direct);
+  // The round with `row_weight` after a factorization with unit weights, by
+  // a system allowed `iterations`, against a system factored with row_weight.
+  auto check_round = [&](const std::vector<double>& row_weight, std::size_t iterations, double bound, bool must_iterate) {
+    PVF::Integer_grid_map_result kept, factored;
+    System cg(S.B1, S.d1, nx, m, none, solver), direct(S.B1, S.d1, nx, m, none, solver);
+    cg.set_cg_max_iterations(iterations);
+    Eigen::VectorXd yc, yr, y_cg, y_direct;
+    ASSERT_EQ(cg.set_weights(unit, kept), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(cg.round(false, yc, yr, kept), PVF::Error_code::SUCCESS);
+    const Eigen::VectorXd n = yr.tail(Eigen::Index(m));  // the integers of unit weights, kept
+    ASSERT_EQ(cg.set_weights(row_weight, kept, false), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(cg.solve_for_integers(n, y_cg, kept), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(direct.set_weights(row_weight, factored), PVF::Error_code::SUCCESS);
+    ASSERT_EQ(direct.solve_for_integers(n, y_direct, factored), PVF::Error_code::SUCCESS);
+    EXPECT_EQ(factored.cg_solves, 0u);
+    if(must_iterate)
+      ASSERT_EQ(kept.cg_solves, 1u);
+    if(kept.cg_solves == 1)
+    {
+      EXPECT_EQ(kept.factorizations, 1u);
+      EXPECT_GE(kept.cg_iterations, 1u);
+      const Eigen::VectorXd x_direct = y_direct.head(Eigen::Index(nx));
+      const double error = energy_norm(row_weight, Eigen::VectorXd(y_cg.head(Eigen::Index(nx)) - x_direct)),
+                   size = energy_norm(row_weight, x_direct);
+      ASSERT_GT(size, 0);
+      EXPECT_LE(error, bound * size);
+      std::printf("[ conjugate gradient ] %zu iterations, energy-norm error %.3g of the solution (bound %.3g)\n",
+                  kept.cg_iterations, error / size, bound);
+    }
+    else
+    {
+      EXPECT_EQ(kept.factorizations, 2u);  // factored again
+      EXPECT_EQ(y_cg, y_direct);
+      std::printf("[ conjugate gradient ] factored again after %zu iterations\n", iterations);
+    }
+  };
+  ASSERT_NO_FATAL_FAILURE(check_round(stiffened, I::stiffening_cg_max_iterations, 1e-12 * std::sqrt(kappa), true));
+  ASSERT_NO_FATAL_FAILURE(check_round(large, I::stiffening_cg_max_iterations, 1e-12 * std::sqrt(1e6), false));
+  ASSERT_NO_FATAL_FAILURE(check_round(stiffened, 0, 0, false));
+
+  // a weight below its factored value: the round factors, it does not iterate
+  PVF::Integer_grid_map_result lowered;
+  System system(S.B1, S.d1, nx, m, none, solver);
+  Eigen::VectorXd yc, yr, y;
+  ASSERT_EQ(system.set_weights(stiffened, lowered), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(system.round(false, yc, yr, lowered), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(system.set_weights(unit, lowered, false), PVF::Error_code::SUCCESS);
+  ASSERT_EQ(system.solve_for_integers(Eigen::VectorXd(yr.tail(Eigen::Index(m))), y, lowered), PVF::Error_code::SUCCESS);
+  EXPECT_EQ(lowered.factorizations, 2u);
+  EXPECT_EQ(lowered.cg_solves, 0u);
 }
 
 // Two integer points that round to the same point fold every face between

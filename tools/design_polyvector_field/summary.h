@@ -123,11 +123,15 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << 100 * sizing.tries[i].second << "%";
       std::cout << " of the bounding-box diagonal from the quads";
     }
-    if(!sizing.tries.empty() || sizing.split_at >= 0)
+    if(!sizing.tries.empty())
       std::cout << " (bound " << 100 * sizing.bound << "%)";
     if(sizing.split_at >= 0)
-      std::cout << "; at " << size.h << ", " << 100 * sizing.split_at
-                << "%: the components farther than the bound split into quads";
+    {
+      std::cout << "; at " << size.h << ", " << 100 * sizing.split_at << "%";
+      if(sizing.tries.empty())
+        std::cout << " (bound " << 100 * sizing.bound << "%)";
+      std::cout << ": the components farther than the bound split into quads";
+    }
     std::cout << "\n";
   }
   if(size.refined())

@@ -227,6 +227,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
     result.flipped_per_round.clear();
     result.stiffening_rounds = 0;
     result.integer_roundings = 0;
+    result.cg_solves = result.cg_iterations = 0;
     // before the last solve, the wider search only for a few flips (see Solve)
     const bool last = !has_features || attempt == internal::max_feature_releases;
     bool narrowed = false;
@@ -250,6 +251,7 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
       result.flipped_per_round.clear();
       result.stiffening_rounds = 0;
       result.integer_roundings = 0;
+      result.cg_solves = result.cg_iterations = 0;
       code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R,
                                              std::numeric_limits<std::size_t>::max(), y, narrowed, result);
       if(code != Error_code::SUCCESS)
@@ -355,8 +357,8 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// A stiffening round keeps the integers of the last rounding and solves for
 /// the continuous unknowns only: the normal equations are updated on the
 /// reweighted faces and, since stiffening only raises weights, solved by
-/// conjugate gradient preconditioned by the factorization of the last round
-/// that rounded (`cg_solves`, `cg_iterations`). Its stopping rule,
+/// conjugate gradient preconditioned by the last factorization
+/// (`cg_solves`, `cg_iterations`, for the rounds of the map returned). Its stopping rule,
 /// `r^T M^-1 r <= 10^-24 b^T M^-1 b` with `M` the factored matrix, bounds the
 /// error in the energy norm by `10^-12 kappa^(1/2)` of the solution, `kappa`
 /// the largest ratio of a weight to its factored value (at most `10^6`); after

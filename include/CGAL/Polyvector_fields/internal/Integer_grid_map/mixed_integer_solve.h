@@ -202,9 +202,10 @@ private:
 // block; then round() rounds the integers (Schur complement and greedy
 // rounding), and solve_for_integers() gives the continuous unknowns for
 // integers already chosen (one solve, no rounding). set_weights() with
-// factor = false, for weights that are nowhere lower than the factored ones,
-// keeps the factor: solve_for_integers() then runs conjugate gradient
-// preconditioned by it, from its last solution (see stiffening_cg_tolerance).
+// factor = false keeps the factor when no weight is lower than at its
+// factorization: solve_for_integers() then runs conjugate gradient
+// preconditioned by it, from its last solution (see stiffening_cg_tolerance);
+// round() factors first.
 //
 // The normal equations of unit weights are made once; a call of
 // set_weights() adds (w_r - 1) B_r^T B_r for the rows whose weight is not 1
@@ -221,9 +222,9 @@ public:
     : m_B1(B1), m_d1(d1), m_nx(nx), m_m(m), m_distinct(distinct), m_prototype(prototype), m_system(prototype)
   {}
 
-  // `row_weight` holds w_r^(1/2) per row of B. With factor = false (and a
-  // factor already made), the weights must be nowhere lower than those of the
-  // last factorization.
+  // `row_weight` holds w_r^(1/2) per row of B. With factor = false, the
+  // factor is kept only if one was made and no weight is lower than at that
+  // factorization (otherwise the matrix is factored).
   template <typename Report>
   Error_code set_weights(const std::vector<double>& row_weight, Report& result, bool factor = true)
   {
@@ -265,6 +266,8 @@ public:
     result.time_assembly += seconds_since(t);
 
     m_stale = m_factored && !factor;
+    for(std::size_t r = 0; m_stale && r < row_weight.size(); ++r)
+      m_stale = row_weight[r] >= m_factored_row_weight[r];
     return m_stale ? Error_code::SUCCESS : factor_block(result);
   }
 
@@ -336,6 +339,7 @@ private:
       return Error_code::SOLVER_FAILURE;
     m_factored = true;
     m_stale = false;
+    m_factored_row_weight = m_row_weight;
     ++result.factorizations;
     result.time_factorization += seconds_since(t);
     return Error_code::SUCCESS;
@@ -417,6 +421,7 @@ private:
   bool m_unit_made = false, m_analyzed = false;
   bool m_factored = false;  // a numeric factorization was made
   bool m_stale = false;     // of other (lower) weights than the current ones
+  std::vector<double> m_factored_row_weight;  // the row weights of the factorization
   std::size_t m_cg_max_iterations = stiffening_cg_max_iterations;
   Eigen::VectorXd m_last_x;  // the continuous unknowns of the last solve
   Row_matrix m_rows;                                  // B1 by rows
@@ -433,6 +438,13 @@ Error_code Mixed_integer_system<SolverTraits>::round(bool refactor_per_rounding,
 {
   const std::size_t nx = m_nx, m = m_m;
   const Eigen::SparseMatrix<double>& Kxn = m_Kxn;
+  if(m_stale)
+  {
+    // the Schur complement needs the factor of the current weights
+    const Error_code factored = factor_block(result);
+    if(factored != Error_code::SUCCESS)
+      return factored;
+  }
   auto t = std::chrono::steady_clock::now();
   Eigen::MatrixXd X;
   if(!m_system.solve(m_bx, X))
@@ -442,6 +454,7 @@ Error_code Mixed_integer_system<SolverTraits>::round(bool refactor_per_rounding,
   y_rounded.resize(Eigen::Index(nx + m));
   if(m == 0)
   {
+    m_last_x = x0;
     y_continuous = x0;
     y_rounded = x0;
     result.time_schur += seconds_since(t);

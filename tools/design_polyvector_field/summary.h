@@ -236,8 +236,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                 << e.split_triangles << " triangles) split into quads, three per triangle: "
                 << e.split_small_components << " smaller than a quad, " << e.split_far_components
                 << " that the quads could not follow within the deviation bound, " << e.split_defective_components
-                << " whose quads were not one closed quad mesh of them, "
-                << e.split_components - e.split_small_components - e.split_far_components - e.split_defective_components
+                << " whose quads were not one closed quad mesh of them, " << unfilled_components(e)
                 << " whose fold-overs could not be filled";
     if(e.refilled_quads > 0)
       std::cout << "; " << e.refilled_quads << " quads still folded cut out with the quads around them and filled";

@@ -149,7 +149,8 @@ public:
   /// few entries per column: a model can then solve with sparse right-hand
   /// sides instead of dense ones. The model of Eigen's CHOLMOD solvers on
   /// real matrices has it (forward solves only, over the reach of each column
-  /// in the elimination tree). Real models only (`Scalar = double`). Returns
+  /// in the elimination tree, on TBB's threads when it is linked, with the
+  /// same result on any number of threads). Real models only (`Scalar = double`). Returns
   /// `false` on failure.
   bool inverse_congruence(const Matrix& C, Dense_matrix& G);
 

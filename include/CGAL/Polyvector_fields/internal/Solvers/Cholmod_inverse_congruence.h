@@ -21,11 +21,17 @@
 // the m forward solves cost far less than m full solves (forward and backward
 // over the whole factor), which is how a generic model computes G.
 //
+// The forward solves (by ranges of columns) and the products of G (by blocks
+// of columns) run on TBB's threads when it is linked. G does not depend on
+// them: each column of W is solved alone, and each entry of G is summed in
+// the same order on any number of threads.
+//
 // Eigen keeps CHOLMOD's factor in a protected member; a class derived from
 // the Eigen solver reads it. The header also gives Eigen's CHOLMOD solvers on
 // real matrices the Solver_scope of the package's own CHOLMOD model.
 
 #include <CGAL/Polyvector_fields/internal/Solvers/cholmod_available.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -37,6 +43,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -85,29 +92,89 @@ private:
   cholmod_common* m_common;
 };
 
-// The dense and sparse workspaces of cholmod_solve2(), freed with their owner.
-struct Cholmod_solve2_workspace
+// An entry of a column of D^(-1/2) W (see cholmod_inverse_congruence()).
+struct Solved_entry
 {
-  explicit Cholmod_solve2_workspace(cholmod_common* c) : common(c) {}
-  ~Cholmod_solve2_workspace()
-  {
-    cholmod_free_dense(&B, common);
-    cholmod_free_sparse(&Bset, common);
-    cholmod_free_dense(&X, common);
-    cholmod_free_sparse(&Xset, common);
-    cholmod_free_dense(&Y, common);
-    cholmod_free_dense(&E, common);
-  }
-  Cholmod_solve2_workspace(const Cholmod_solve2_workspace&) = delete;
-  Cholmod_solve2_workspace& operator=(const Cholmod_solve2_workspace&) = delete;
+  int row;
+  double value;
+};
 
-  cholmod_common* common;
-  cholmod_dense* B = nullptr;
-  cholmod_sparse* Bset = nullptr;
-  cholmod_dense* X = nullptr;
-  cholmod_sparse* Xset = nullptr;
-  cholmod_dense* Y = nullptr;
-  cholmod_dense* E = nullptr;
+// Sparse forward solves with a simplicial factor, one column at a time: a
+// CHOLMOD workspace of its own (so that several of them solve with one factor
+// at the same time: cholmod_solve2() with a Bset and CHOLMOD_L only reads the
+// factor) and the right-hand side, solution and work arrays of
+// cholmod_solve2(), freed with it.
+class Cholmod_forward_solver
+{
+public:
+  // for factors of n rows, right-hand sides of at most `longest` entries
+  Cholmod_forward_solver(std::size_t n, std::size_t longest)
+  {
+    cholmod_start(&m_common);
+    m_B = cholmod_zeros(n, 1, CHOLMOD_REAL, &m_common);
+    m_Bset = cholmod_allocate_sparse(n, 1, longest, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 0, CHOLMOD_PATTERN,
+                                     &m_common);
+  }
+  ~Cholmod_forward_solver()
+  {
+    cholmod_free_dense(&m_B, &m_common);
+    cholmod_free_sparse(&m_Bset, &m_common);
+    cholmod_free_dense(&m_X, &m_common);
+    cholmod_free_sparse(&m_Xset, &m_common);
+    cholmod_free_dense(&m_Y, &m_common);
+    cholmod_free_dense(&m_E, &m_common);
+    cholmod_finish(&m_common);
+  }
+  Cholmod_forward_solver(const Cholmod_forward_solver&) = delete;
+  Cholmod_forward_solver& operator=(const Cholmod_forward_solver&) = delete;
+
+  // The entries of column j of D^(-1/2) L^-1 P C (L the simplicial factor,
+  // `position` P as the new position of each row, `scale` D^(-1/2)), in the
+  // order of the solve's reach, without zeros; false on a CHOLMOD failure.
+  bool solve(cholmod_factor* L, const Eigen::SparseMatrix<double>& C, Eigen::Index j, const std::vector<int>& position,
+             const std::vector<double>& scale, std::vector<Solved_entry>& entries)
+  {
+    entries.clear();
+    if(m_B == nullptr || m_Bset == nullptr)
+      return false;
+    double* b = static_cast<double*>(m_B->x);
+    int* bset_p = static_cast<int*>(m_Bset->p);
+    int* bset_i = static_cast<int*>(m_Bset->i);
+    int count = 0;
+    for(Eigen::SparseMatrix<double>::InnerIterator it(C, j); it; ++it)
+    {
+      const int k = position[std::size_t(it.row())];
+      bset_i[count++] = k;
+      b[k] = it.value();
+    }
+    if(count == 0)
+      return true;  // a zero column of C: a zero row and column of G
+    bset_p[0] = 0;
+    bset_p[1] = count;
+    if(!cholmod_solve2(CHOLMOD_L, L, m_B, m_Bset, &m_X, &m_Xset, &m_Y, &m_E, &m_common) ||
+       m_common.status != CHOLMOD_OK)
+      return false;
+    const int* xset_i = static_cast<const int*>(m_Xset->i);
+    const int reach = static_cast<const int*>(m_Xset->p)[1];
+    const double* x = static_cast<const double*>(m_X->x);
+    entries.reserve(std::size_t(reach));
+    for(int p = 0; p < reach; ++p)
+    {
+      const std::size_t k = std::size_t(xset_i[p]);
+      if(x[k] != 0)
+        entries.push_back(Solved_entry{int(k), x[k] * scale[k]});
+    }
+    return true;
+  }
+
+private:
+  cholmod_common m_common;
+  cholmod_dense* m_B = nullptr;
+  cholmod_sparse* m_Bset = nullptr;
+  cholmod_dense* m_X = nullptr;
+  cholmod_sparse* m_Xset = nullptr;
+  cholmod_dense* m_Y = nullptr;
+  cholmod_dense* m_E = nullptr;
 };
 
 // G = C^T A^-1 C for the numeric factor `factor` of A (see the top of the
@@ -116,7 +183,7 @@ struct Cholmod_solve2_workspace
 // factorization of the solver keeps its supernodes). Returns false on a
 // CHOLMOD failure or a pivot that is not positive.
 inline bool cholmod_inverse_congruence(cholmod_factor* factor, cholmod_common* common,
-                                       const Eigen::SparseMatrix<double>& C, Eigen::MatrixXd& G)
+                                       const Eigen::SparseMatrix<double>& C, Eigen::MatrixXd& G, bool parallel = true)
 {
   const std::size_t n = factor->n, m = std::size_t(C.cols());
   if(std::size_t(C.rows()) != n || factor->xtype != CHOLMOD_REAL || factor->itype != CHOLMOD_INT)
@@ -155,50 +222,26 @@ inline bool cholmod_inverse_congruence(cholmod_factor* factor, cholmod_common* c
   for(std::size_t k = 0; k < n; ++k)
     position[perm != nullptr ? std::size_t(perm[k]) : k] = int(k);
 
-  // The columns of D^(-1/2) W, one forward solve each.
-  Cholmod_solve2_workspace work(common);
-  work.B = cholmod_zeros(n, 1, CHOLMOD_REAL, common);
-  Eigen::Index longest = 0;
+  // The columns of D^(-1/2) W, one forward solve each, by ranges of columns
+  // on TBB's threads when `parallel` (each thread with its own CHOLMOD
+  // workspace; the solves only read L). Each column is solved alone, so its
+  // entries do not depend on the threads.
+  Eigen::Index longest = 1;
   for(Eigen::Index j = 0; j < C.outerSize(); ++j)
     longest = (std::max)(longest, Eigen::Index(C.outerIndexPtr()[j + 1] - C.outerIndexPtr()[j]));
-  work.Bset = cholmod_allocate_sparse(n, 1, std::size_t((std::max)(longest, Eigen::Index(1))), /*sorted*/ 0,
-                                      /*packed*/ 1, /*stype*/ 0, CHOLMOD_PATTERN, common);
-  if(work.B == nullptr || work.Bset == nullptr)
-    return false;
-  double* b = static_cast<double*>(work.B->x);
-  int* bset_p = static_cast<int*>(work.Bset->p);
-  int* bset_i = static_cast<int*>(work.Bset->i);
-  std::vector<int> row_of, column_of;  // the entries of D^(-1/2) W, column after column
-  std::vector<double> value_of;
-  for(Eigen::Index j = 0; j < Eigen::Index(m); ++j)
-  {
-    int count = 0;
-    for(Eigen::SparseMatrix<double>::InnerIterator it(C, j); it; ++it)
-    {
-      const int k = position[std::size_t(it.row())];
-      bset_i[count++] = k;
-      b[k] = it.value();
-    }
-    if(count == 0)
-      continue;  // a zero column of C: a zero row and column of G
-    bset_p[0] = 0;
-    bset_p[1] = count;
-    if(!cholmod_solve2(CHOLMOD_L, L, work.B, work.Bset, &work.X, &work.Xset, &work.Y, &work.E, common))
-      return false;
-    const int* xset_i = static_cast<const int*>(work.Xset->i);
-    const int reach = static_cast<const int*>(work.Xset->p)[1];
-    const double* x = static_cast<const double*>(work.X->x);
-    for(int p = 0; p < reach; ++p)
-    {
-      const std::size_t k = std::size_t(xset_i[p]);
-      if(x[k] == 0)
-        continue;
-      row_of.push_back(int(k));
-      column_of.push_back(int(j));
-      value_of.push_back(x[k] * scale[k]);
-    }
-  }
-  if(common->status != CHOLMOD_OK)
+  std::vector<std::vector<Solved_entry> > column_entries(m);  // column j of D^(-1/2) W
+  std::atomic<bool> failed(false);
+  auto make = [n, longest]() { return Cholmod_forward_solver(n, std::size_t(longest)); };
+  auto solve_range = [&](Cholmod_forward_solver& solver, std::size_t begin, std::size_t end) {
+    for(std::size_t j = begin; j < end && !failed; ++j)
+      if(!solver.solve(L, C, Eigen::Index(j), position, scale, column_entries[j]))
+        failed = true;
+  };
+  if(parallel)
+    for_each_range_with_scratch<CGAL::Parallel_if_available_tag>(m, 8, make, solve_range);
+  else
+    for_each_range_with_scratch<CGAL::Sequential_tag>(m, 8, make, solve_range);
+  if(failed)
     return false;
 
   // G = (D^(-1/2) W)^T (D^(-1/2) W), row after row of W: a row with few
@@ -206,43 +249,65 @@ inline bool cholmod_inverse_congruence(cholmod_factor* factor, cholmod_common* c
   // (the separators near the root of the elimination tree) are gathered in a
   // dense block and added by one rank update.
   std::vector<std::size_t> start(n + 1, 0);
-  for(int k : row_of)
-    ++start[std::size_t(k) + 1];
+  for(const std::vector<Solved_entry>& column : column_entries)
+    for(const Solved_entry& e : column)
+      ++start[std::size_t(e.row) + 1];
   for(std::size_t k = 0; k < n; ++k)
     start[k + 1] += start[k];
-  std::vector<int> entry_column(row_of.size());
-  std::vector<double> entry_value(row_of.size());
+  std::vector<int> entry_column(start[n]);
+  std::vector<double> entry_value(start[n]);
   {
     std::vector<std::size_t> next(start.begin(), start.end() - 1);
-    for(std::size_t e = 0; e < row_of.size(); ++e)  // by column: each row's columns stay increasing
+    for(std::size_t j = 0; j < m; ++j)  // by column: each row's columns stay increasing
     {
-      const std::size_t at = next[std::size_t(row_of[e])]++;
-      entry_column[at] = column_of[e];
-      entry_value[at] = value_of[e];
+      for(const Solved_entry& e : column_entries[j])
+      {
+        const std::size_t at = next[std::size_t(e.row)]++;
+        entry_column[at] = int(j);
+        entry_value[at] = e.value;
+      }
+      std::vector<Solved_entry>().swap(column_entries[j]);
     }
   }
   const std::size_t dense_from = (std::max)(std::size_t(8), m / 4);
-  std::vector<std::size_t> dense_rows;
+  std::vector<std::size_t> sparse_rows, dense_rows;
   for(std::size_t k = 0; k < n; ++k)
   {
     const std::size_t length = start[k + 1] - start[k];
     if(length >= dense_from)
-    {
       dense_rows.push_back(k);
-      continue;
+    else if(length > 0)
+      sparse_rows.push_back(k);
+  }
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(dense_rows.size()));
+  for(std::size_t r = 0; r < dense_rows.size(); ++r)
+    for(std::size_t p = start[dense_rows[r]]; p < start[dense_rows[r] + 1]; ++p)
+      U(entry_column[p], Eigen::Index(r)) = entry_value[p];
+  // The lower triangle of G by blocks of columns, on TBB's threads when
+  // `parallel`: each block adds the products of the sparse rows in the order
+  // of the rows, then those of the dense rows, so that every entry is summed
+  // in the same order whatever the threads.
+  const std::size_t width = 32, blocks = (m + width - 1) / width;
+  for_each_index(parallel, blocks, [&](std::size_t block) {
+    const int c0 = int(block * width), c1 = int((std::min)(m, (block + 1) * width));
+    for(std::size_t k : sparse_rows)
+    {
+      const int* first = entry_column.data() + start[k];
+      const int* last = entry_column.data() + start[k + 1];
+      if(last[-1] < c0 || first[0] >= c1)
+        continue;
+      const std::size_t end = start[k + 1];
+      for(std::size_t q = std::size_t(std::lower_bound(first, last, c0) - entry_column.data());
+          q < end && entry_column[q] < c1; ++q)
+        for(std::size_t p = q; p < end; ++p)
+          G(entry_column[p], entry_column[q]) += entry_value[p] * entry_value[q];
     }
-    for(std::size_t p = start[k]; p < start[k + 1]; ++p)
-      for(std::size_t q = start[k]; q <= p; ++q)
-        G(entry_column[p], entry_column[q]) += entry_value[p] * entry_value[q];
-  }
-  if(!dense_rows.empty())
-  {
-    Eigen::MatrixXd U = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(dense_rows.size()));
-    for(std::size_t r = 0; r < dense_rows.size(); ++r)
-      for(std::size_t p = start[dense_rows[r]]; p < start[dense_rows[r] + 1]; ++p)
-        U(entry_column[p], Eigen::Index(r)) = entry_value[p];
-    G.selfadjointView<Eigen::Lower>().rankUpdate(U);
-  }
+    if(!dense_rows.empty())
+    {
+      const Eigen::Index rows = Eigen::Index(m) - c0, w = c1 - c0;
+      G.block(c0, c0, rows, w).noalias() += U.middleRows(c0, rows) * U.middleRows(c0, w).transpose();
+    }
+  });
   G.triangularView<Eigen::StrictlyUpper>() = G.transpose();
   return true;
 }

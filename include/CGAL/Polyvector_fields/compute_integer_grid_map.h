@@ -233,8 +233,8 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
     bool narrowed = false;
     code = internal::solve_with_stiffening(
       M, S, nx, m, p, solver_prototype, R,
-      last ? std::numeric_limits<std::size_t>::max() : internal::wide_search_max_flips_before_release, y, narrowed,
-      result);
+      last ? std::numeric_limits<std::size_t>::max() : internal::wide_search_max_flips_before_release,
+      last ? internal::stiffening_patience : internal::wide_search_patience_before_release, y, narrowed, result);
     if(code != Error_code::SUCCESS)
       return code;
     auto flat = [&result]() {
@@ -253,7 +253,8 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
       result.integer_roundings = 0;
       result.cg_solves = result.cg_iterations = 0;
       code = internal::solve_with_stiffening(M, S, nx, m, p, solver_prototype, R,
-                                             std::numeric_limits<std::size_t>::max(), y, narrowed, result);
+                                             std::numeric_limits<std::size_t>::max(), internal::stiffening_patience, y,
+                                             narrowed, result);
       if(code != Error_code::SUCCESS)
         return code;
       if(flat())
@@ -372,7 +373,9 @@ Error_code compute_integer_grid_map(const Frame_field_comb<Bundle>& comb, UVMap 
 /// once. With features, a solve that will release features (see
 /// <b>Features</b>) runs the wider search only when the fast rounds left at
 /// most 16 flipped faces: beyond, the features beside them are released
-/// whatever the search. The map that is returned always had the wider search. The greedy rounding updates only the block of the integers
+/// whatever the search; and that search ends after 4 rounds in a row without
+/// fewer flips than its best. The map that is returned always had the wider
+/// search (with that patience of 4 when no feature was beside its flips). The greedy rounding updates only the block of the integers
 /// still free, about `m^3 / 3` operations for `m` integer unknowns.
 ///
 /// <b>Output.</b> `uv_map[h]` is the value at `target(h)` inside `face(h)`. The

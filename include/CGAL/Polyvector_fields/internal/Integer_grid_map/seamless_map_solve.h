@@ -483,15 +483,15 @@ struct Unit_weight_round
 // flips; a round that does not have fewer flips than the one before it makes
 // the next round round the integers again, with the stiffened weights.
 // Without, every round rounds them. The rounds end without flips, after
-// p.max_rounds stiffening rounds, or after stiffening_patience rounds without
-// fewer flips than the best; best_y is the solution of the round with the
+// p.max_rounds stiffening rounds, or after `patience` rounds without fewer
+// flips than the best; best_y is the solution of the round with the
 // fewest flips (then the lowest energy) among the rounds of every call.
 template <typename CornerMesh, typename Solver, typename Report>
 Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, std::size_t m,
                              const Seamless_map_parameters& p, bool keep_integers, const Seamless_reduction& R,
                              const std::vector<std::vector<std::size_t> >& vertex_faces,
                              Mixed_integer_system<Solver>& system, Unit_weight_round& unit, Eigen::VectorXd& best_y,
-                             std::size_t& best_flips, double& best_energy, Report& result)
+                             std::size_t& best_flips, double& best_energy, std::size_t patience, Report& result)
 {
   const std::size_t F = M.F;
   std::vector<double> weight(F, 1.0), row_weight(4 * F, 1.0);
@@ -563,7 +563,7 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
       ++result.stiffening_rounds;
       result.time_stiffening += seconds_since(round_start);
     }
-    if(flips == 0 || round == p.max_rounds || round - best_round >= stiffening_patience)
+    if(flips == 0 || round == p.max_rounds || round - best_round >= patience)
       break;
     // keeping the integers stalled: round them again (a rounding is always
     // followed by at least one round that keeps them)
@@ -583,19 +583,34 @@ Error_code run_stiffening_rounds(const CornerMesh& M, const Guidance_system& S, 
 // (the whole run: 282 s -> 159 s).
 constexpr std::size_t wide_search_max_flips_before_release = 16;
 
+// The patience of the wider search when features are released after it (the
+// other searches have stiffening_patience). There, its purpose is to end
+// below the fast rounds' fewest flips, sparing the features beside them, and
+// each of its rounds makes a Schur complement. On the corpus (libigl's
+// tutorial data, with and without sharp edges at 40 degrees), no wider search
+// before a release that went more than 4 rounds without lowering its fewest
+// flips ended below the fast rounds (armadillo.obj's ran 20 rounds to end at
+// the fast rounds' 8 flips). The fast rounds did: face.obj's went from 2
+// flips to 0 after 7 rounds without fewer, fertility.off's from 1 to 0
+// after 5.
+constexpr std::size_t wide_search_patience_before_release = 4;
+
 // The rounds of run_stiffening_rounds(): with p.keep_integers, first the fast
 // rounds that keep the integers; when faces still flip after them, at most
 // wide_search_max_flips of them, the rounds again from unit weights,
 // rounding the integers in every round (a wider search: on fandisk the fast
 // rounds left a flip that released two sharp edges, the second search none).
 // best_y is the best of all rounds. The first round of both, with unit
-// weights, is solved once. wide_search_skipped: whether the wider search was
-// left out because of wide_search_max_flips.
+// weights, is solved once. The fast rounds end after stiffening_patience
+// rounds without fewer flips, the wider search after wide_search_patience.
+// wide_search_skipped: whether the wider search was left out because of
+// wide_search_max_flips.
 template <typename CornerMesh, typename Solver, typename Report>
 Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, std::size_t nx, std::size_t m,
                                  const Seamless_map_parameters& p, const Solver& solver_prototype,
                                  const Seamless_reduction& R, std::size_t wide_search_max_flips,
-                                 Eigen::VectorXd& best_y, bool& wide_search_skipped, Report& result)
+                                 std::size_t wide_search_patience, Eigen::VectorXd& best_y, bool& wide_search_skipped,
+                                 Report& result)
 {
   const std::vector<Distinct_points> distinct = integer_point_pairs(M, R);
   std::vector<std::vector<std::size_t> > vertex_faces(M.V);
@@ -606,14 +621,14 @@ Error_code solve_with_stiffening(const CornerMesh& M, const Guidance_system& S, 
   std::size_t best_flips = std::numeric_limits<std::size_t>::max();
   double best_energy = 0;
   Error_code code = run_stiffening_rounds(M, S, m, p, p.keep_integers, R, vertex_faces, system, unit, best_y,
-                                          best_flips, best_energy, result);
+                                          best_flips, best_energy, stiffening_patience, result);
   wide_search_skipped = false;
   if(code == Error_code::SUCCESS && p.keep_integers && best_flips > 0)
   {
     wide_search_skipped = best_flips > wide_search_max_flips;
     if(!wide_search_skipped)
       code = run_stiffening_rounds(M, S, m, p, false, R, vertex_faces, system, unit, best_y, best_flips, best_energy,
-                                   result);
+                                   wide_search_patience, result);
   }
   return code;
 }

@@ -247,7 +247,7 @@ inline bool cholmod_inverse_congruence(cholmod_factor* factor, cholmod_common* c
   // G = (D^(-1/2) W)^T (D^(-1/2) W), row after row of W: a row with few
   // entries adds their products one by one; the rows that reach most columns
   // (the separators near the root of the elimination tree) are gathered in a
-  // dense block and added by one rank update.
+  // dense block U and added as U U^T, by blocks of columns (below).
   std::vector<std::size_t> start(n + 1, 0);
   for(const std::vector<Solved_entry>& column : column_entries)
     for(const Solved_entry& e : column)

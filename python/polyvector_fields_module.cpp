@@ -1377,6 +1377,7 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
   py::dict info;
   info["status"] = code_name(code);
   info["converged"] = r.converged;
+  info["left_surface"] = r.left_surface;
   info["iterations"] = r.iterations;
   info["threshold"] = r.threshold;
   info["max_planarity_before"] = r.max_planarity_before;

@@ -349,6 +349,9 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
     quad edge). When the threshold is not reached (``info["status"]`` is
     ``"DID_NOT_CONVERGE"`` or ``"TOO_FAR_FROM_SURFACE"``), the quad mesh is
     returned as given, not raised: the command-line program does the same.
+    ``info["left_surface"]`` is true when the iterations stopped early because
+    a vertex was beyond that bound once the pull towards the surface had
+    reached its floor.
 
     Returns ``Vq2`` (the moved vertices; ``Fq`` is unchanged) and ``info``.
     """

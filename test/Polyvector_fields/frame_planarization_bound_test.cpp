@@ -106,19 +106,24 @@ void saddle(Mesh& quads, Mesh& reference)
 
 // The same planarization with a bound it cannot keep and one it keeps: the
 // first is TOO_FAR_FROM_SURFACE with the mesh untouched and the worst
-// distance reported; the second succeeds and its mesh is that far.
+// distance reported; the second succeeds and its mesh is that far. The
+// threshold, 2%, is reached before the pull towards the surface is at its
+// floor (66 iterations), so that both runs make the same iterations.
 TEST(PlanarizationBound, ExplicitBound)
 {
   Mesh quads, reference;
   saddle(quads, reference);
   const double edge = mean_edge_length(quads);
+  namespace P = PVF::parameters;
 
   Mesh loose = quads;
   PVF::Planarization_result r_loose;
-  ASSERT_EQ(PVF::planarize_quad_mesh(loose, reference, r_loose, PVF::parameters::max_distance_to_surface(10 * edge)),
+  ASSERT_EQ(PVF::planarize_quad_mesh(loose, reference, r_loose,
+                                     P::max_distance_to_surface(10 * edge, P::planarity_threshold(0.02))),
             PVF::Error_code::SUCCESS);
   EXPECT_TRUE(r_loose.converged);
   EXPECT_GT(r_loose.iterations, 0u);
+  ASSERT_LT(r_loose.iterations, 66u) << "the test needs the threshold reached before the pull is at its floor";
   const double moved = max_distance_to(reference, loose);
   EXPECT_NEAR(r_loose.max_distance, moved, 1e-9 * edge);
   EXPECT_DOUBLE_EQ(r_loose.distance_bound, 10 * edge);
@@ -128,18 +133,21 @@ TEST(PlanarizationBound, ExplicitBound)
   const double tight = 0.5 * moved;
   Mesh kept = quads;
   PVF::Planarization_result r_tight;
-  EXPECT_EQ(PVF::planarize_quad_mesh(kept, reference, r_tight, PVF::parameters::max_distance_to_surface(tight)),
+  EXPECT_EQ(PVF::planarize_quad_mesh(kept, reference, r_tight,
+                                     P::max_distance_to_surface(tight, P::planarity_threshold(0.02))),
             PVF::Error_code::TOO_FAR_FROM_SURFACE);
   EXPECT_TRUE(same_points(kept, quads)) << "a failure leaves the mesh as it was";
   EXPECT_TRUE(r_tight.converged);  // the planarity was reached; the distance was not kept
+  EXPECT_FALSE(r_tight.left_surface);
   EXPECT_EQ(r_tight.iterations, r_loose.iterations);
   EXPECT_DOUBLE_EQ(r_tight.distance_bound, tight);
   EXPECT_NEAR(r_tight.max_distance, moved, 1e-9 * edge);
   EXPECT_GT(r_tight.max_distance, r_tight.distance_bound);
 }
 
-// The default bound, 5% of the mean quad edge: the coarse saddle is planar
-// only with a vertex farther than that (an error, not a success), while a
+// The default bound, 5% of the mean quad edge: the coarse saddle gets planar
+// only with a vertex farther than that, so its iterations stop once the pull
+// towards the surface is at its floor (an error, not a success), while a
 // grid on an elliptic paraboloid, along directions close to its principal
 // ones, reaches a threshold just below its planarity (0.46%) within it.
 TEST(PlanarizationBound, DefaultBound)
@@ -154,8 +162,9 @@ TEST(PlanarizationBound, DefaultBound)
     EXPECT_NEAR(r.mean_edge_length, edge, 1e-12 * edge);
     EXPECT_NEAR(r.distance_bound, 0.05 * edge, 1e-12 * edge);
     EXPECT_GT(r.max_distance, 0.05 * edge);
+    EXPECT_TRUE(r.left_surface);
     EXPECT_TRUE(same_points(planar, quads));
-    std::cout << "saddle 4x4: planar to " << 100 * r.max_planarity_after << "% with a vertex "
+    std::cout << "saddle 4x4: stopped at planarity " << 100 * r.max_planarity_after << "% with a vertex "
               << 100 * r.max_distance / edge << "% of the mean edge from the surface\n";
   }
   {
@@ -175,6 +184,55 @@ TEST(PlanarizationBound, DefaultBound)
     EXPECT_LE(d, 0.05 * edge);
     EXPECT_NEAR(r.max_distance, d, 1e-9 * edge);
   }
+}
+
+// Once the pull towards the surface is at its floor (beta = 1e-3, after as
+// many iterations as it takes 0.9^k to get there), a vertex beyond the bound
+// stops the iterations with TOO_FAR_FROM_SURFACE. The threshold here cannot be
+// reached (1e-9): with a loose bound, or a pull that never decays, the same
+// run goes on to the iteration limit and ends in DID_NOT_CONVERGE.
+TEST(PlanarizationBound, StopsWhenTheSurfaceNoLongerPulls)
+{
+  Mesh quads, reference;
+  saddle(quads, reference);
+  const double edge = mean_edge_length(quads);
+  std::size_t floor_iterations = 0;
+  for(double beta = 1; beta > 1e-3; beta *= 0.9)
+    ++floor_iterations;
+  ASSERT_EQ(floor_iterations, 66u);
+  namespace P = PVF::parameters;
+
+  Mesh stopped = quads;
+  PVF::Planarization_result r;
+  const double tight = 1e-6 * edge;
+  EXPECT_EQ(PVF::planarize_quad_mesh(stopped, reference, r,
+                                     P::max_distance_to_surface(tight, P::planarity_threshold(1e-9)).number_of_iterations(200)),
+            PVF::Error_code::TOO_FAR_FROM_SURFACE);
+  EXPECT_TRUE(r.left_surface);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.iterations, floor_iterations);
+  EXPECT_GT(r.max_distance, tight);
+  EXPECT_GT(r.max_planarity_after, 1e-9);
+  EXPECT_TRUE(same_points(stopped, quads)) << "a failure leaves the mesh as it was";
+
+  Mesh loose = quads;
+  PVF::Planarization_result r_loose;
+  EXPECT_EQ(PVF::planarize_quad_mesh(loose, reference, r_loose,
+                                     P::max_distance_to_surface(10 * edge, P::planarity_threshold(1e-9)).number_of_iterations(200)),
+            PVF::Error_code::DID_NOT_CONVERGE);
+  EXPECT_FALSE(r_loose.left_surface);
+  EXPECT_EQ(r_loose.iterations, 200u);
+  EXPECT_LE(r_loose.max_distance, 10 * edge);
+
+  Mesh constant = quads;
+  PVF::Planarization_result r_constant;
+  EXPECT_EQ(PVF::planarize_quad_mesh(constant, reference, r_constant,
+                                     P::closeness_decay(1.0, P::max_distance_to_surface(tight, P::planarity_threshold(1e-9)))
+                                       .number_of_iterations(200)),
+            PVF::Error_code::DID_NOT_CONVERGE);
+  EXPECT_FALSE(r_constant.left_surface);
+  EXPECT_EQ(r_constant.iterations, 200u);
+  EXPECT_GT(r_constant.max_distance, tight);
 }
 
 // A bound that is not a positive finite length is refused by name.

@@ -257,7 +257,14 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     if(q.planarized)
     {
       const PVF::Planarization_result& r = q.planarization;
-      if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE)
+      if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE && r.left_surface)
+        std::cout << "; the planarization stopped after " << r.iterations << " iterations at max "
+                  << 100 * r.max_planarity_after << "%, mean " << 100 * r.mean_planarity_after
+                  << "%: a vertex was " << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length
+                  << "% of the mean quad edge) from the surface, beyond the bound " << r.distance_bound << " ("
+                  << 100 * o.max_surface_distance
+                  << "%), with the pull towards the surface at its floor: the quad mesh is written as extracted";
+      else if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE)
         std::cout << "; the planarization reached " << 100 * r.max_planarity_after << "% only by moving a vertex "
                   << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length
                   << "% of the mean quad edge) from the surface, beyond the bound " << r.distance_bound << " ("

@@ -10,7 +10,9 @@
 
 /// \file Default_sparse_solver.h
 ///
-/// The sparse solvers that are always available, and the package's default.
+/// The sparse solvers that are always available, and the package's defaults:
+/// `Default_sparse_solver` for the complex systems of the fields,
+/// `Default_real_sparse_solver` for the real ones of the map and the planarization.
 
 #include <CGAL/Polyvector_fields/Adaptive_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Amg_sparse_solver.h>
@@ -18,6 +20,7 @@
 
 #if defined(CGAL_PVF_HAS_CHOLMOD)
 #  include <CGAL/Polyvector_fields/Cholmod_solver.h>
+#  include <Eigen/CholmodSupport>
 #endif
 
 #include <CGAL/Eigen_solver_traits.h>
@@ -60,6 +63,28 @@ typedef Simplicial_ldlt_solver Direct_sparse_solver;
 /// of fewer than 8,000 unknowns, `Amg_sparse_solver` (multigrid-preconditioned
 /// conjugate gradient, whose cost grows linearly) for larger ones.
 typedef Adaptive_sparse_solver<Direct_sparse_solver> Default_sparse_solver;
+
+#if defined(DOXYGEN_RUNNING)
+/// \ingroup PkgPolyvectorFieldsSolvers
+///
+/// is the sparse solver of the real systems when none is given, those of
+/// `compute_integer_grid_map()` and `planarize_quad_mesh()`: a model of
+/// `SparseLinearAlgebraWithFactorTraits_d` on `double` (both systems are real,
+/// symmetric and positive definite): CHOLMOD through Eigen's
+/// `CholmodDecomposition` when the macro `CGAL_PVF_HAS_CHOLMOD` is defined (as
+/// for `Direct_sparse_solver`), Eigen's `SimplicialLDLT` otherwise. With CHOLMOD,
+/// OpenBLAS runs on one thread while the package factors and solves, as for
+/// `Cholmod_sparse_solver`, so that a map does not depend on the number of
+/// OpenBLAS threads; and the Schur complement of the integer unknowns is made by
+/// sparse forward solves (the operation `inverse_congruence()` of the concept
+/// `SparseFactorization`).
+typedef unspecified_type Default_real_sparse_solver;
+#elif defined(CGAL_PVF_HAS_CHOLMOD)
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> >
+  Default_real_sparse_solver;
+#else
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_real_sparse_solver;
+#endif
 
 } // namespace Polyvector_fields
 } // namespace CGAL

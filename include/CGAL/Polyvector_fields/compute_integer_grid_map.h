@@ -16,6 +16,7 @@
 /// the seams are found once, and the map returns their exact transitions for
 /// `extract_quad_mesh()`.
 
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Tangent_bundle.h>
 #include <CGAL/Polyvector_fields/comb_frame_field.h>
 #include <CGAL/Polyvector_fields/internal/Integer_grid_map/seamless_map_solve.h>
@@ -26,10 +27,6 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-
-#if defined(CGAL_PVF_HAS_CHOLMOD)
-#  include <Eigen/CholmodSupport>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -43,27 +40,6 @@
 
 namespace CGAL {
 namespace Polyvector_fields {
-
-#if defined(DOXYGEN_RUNNING)
-/// \ingroup PkgPolyvectorFieldsParametrization
-///
-/// is the sparse solver of `compute_integer_grid_map()` when none is given, a model
-/// of `SparseLinearAlgebraWithFactorTraits_d` on `double` (the system is real,
-/// symmetric and positive definite): CHOLMOD through Eigen's
-/// `CholmodDecomposition` when the macro `CGAL_PVF_HAS_CHOLMOD` is defined (as
-/// for `Direct_sparse_solver`), Eigen's `SimplicialLDLT` otherwise. With CHOLMOD,
-/// OpenBLAS runs on one thread while the package factors and solves, as for
-/// `Cholmod_sparse_solver`, so that a map does not depend on the number of
-/// OpenBLAS threads; and the Schur complement of the integer unknowns is made by
-/// sparse forward solves (the operation `inverse_congruence()` of the concept
-/// `SparseFactorization`).
-typedef unspecified_type Default_real_sparse_solver;
-#elif defined(CGAL_PVF_HAS_CHOLMOD)
-typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> >
-  Default_real_sparse_solver;
-#else
-typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_real_sparse_solver;
-#endif
 
 /// \ingroup PkgPolyvectorFieldsParametrization
 ///

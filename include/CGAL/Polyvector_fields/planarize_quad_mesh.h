@@ -14,6 +14,7 @@
 
 /// \file planarize_quad_mesh.h
 
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
 #include <CGAL/Polyvector_fields/internal/Planarization/Local_global_planarization.h>
@@ -37,6 +38,7 @@ struct Planarization_result
 {
   std::size_t iterations = 0;                  ///< local-global iterations done
   bool converged = false;                      ///< every face reached `planarity_threshold`
+  bool left_surface = false;                   ///< the iterations stopped before the threshold: with the pull towards the surface at its floor, a vertex was farther than `distance_bound` from it (`Error_code::TOO_FAR_FROM_SURFACE`)
   double threshold = 0;                        ///< `planarity_threshold` used
   double max_planarity_before = 0;             ///< largest face planarity of the input
   double mean_planarity_before = 0;            ///< mean face planarity of the input
@@ -81,10 +83,16 @@ struct Planarization_result
 /// (floor 1e-3): at a fixed point the effective closeness and fairness weights
 /// are `wc beta` and `wf beta`, so planarity wins more and more.
 ///
+/// Once `beta` is at its floor, the surface no longer pulls a vertex back: if
+/// one is then farther than `max_distance_to_surface`, the iterations stop
+/// there with `Error_code::TOO_FAR_FROM_SURFACE` and
+/// `Planarization_result::left_surface` set, instead of running on to
+/// `number_of_iterations` towards the same error.
+///
 /// That matrix is real, symmetric and positive definite; it is factored through
 /// `Sparse_factorization<SolverTraits, double>` for the solver of the named parameter
-/// `sparse_linear_solver` (default: Eigen's `SimplicialLDLT`, with or without
-/// CHOLMOD), and each iteration solves for the three coordinates at once. All computations are done in
+/// `sparse_linear_solver` (default: `Default_real_sparse_solver`, CHOLMOD when it
+/// is available), and each iteration solves for the three coordinates at once. All computations are done in
 /// `double`, whatever the kernels.
 /// It is a local-global method like the frame-field algorithms, but not on their
 /// driver: its unknowns are real vertex positions (three right-hand sides, one
@@ -144,7 +152,7 @@ struct Planarization_result
 ///                           `SparseFactorization` on `double` (Section \ref pvf_solver_concept)}
 ///     \cgalParamType{a class `SolverTraits` for which `Sparse_factorization<SolverTraits, double>` is a model of
 ///                    `SparseFactorization`, such as a model of `SparseLinearAlgebraWithFactorTraits_d` on `double`}
-///     \cgalParamDefault{`CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`}
+///     \cgalParamDefault{`Default_real_sparse_solver`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `qm`}
@@ -158,8 +166,9 @@ struct Planarization_result
 ///          `NON_QUAD_FACE`; `NON_TRIANGLE_FACE` (reference); `NON_FINITE_VALUE` (a parameter or a coordinate);
 ///          `INVALID_PARAMETER` (a parameter out of its range); `SOLVER_FAILURE`; `DID_NOT_CONVERGE` when
 ///          `number_of_iterations` iterations did not reach the threshold; `TOO_FAR_FROM_SURFACE` when they
-///          reached it with a vertex farther than `max_distance_to_surface` from `reference`
-///          (`Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
+///          reached it with a vertex farther than `max_distance_to_surface` from `reference`, or stopped
+///          before it with such a vertex and the pull towards the surface at its floor
+///          (`Planarization_result::left_surface`; `Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
 ///          `result` holds the measurements either way.
 ///
 /// \sa `quad_planarity()`, `extract_quad_mesh()`
@@ -171,9 +180,8 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, P
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_solver;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t, NamedParameters,
-                                                             Default_solver>::type Solver;
+                                                             Default_real_sparse_solver>::type Solver;
   result = Planarization_result();
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, qm));

@@ -217,6 +217,10 @@ PVF_FUZZ_TARGET(planarize)
     PVF_FUZZ_CHECK(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE ||
                      code == Error_code::TOO_FAR_FROM_SURFACE || code == Error_code::SOLVER_FAILURE,
                    "undocumented code " + code_name(code));
+  PVF_FUZZ_CHECK(!result.left_surface || code == Error_code::TOO_FAR_FROM_SURFACE,
+                 "left_surface with " + code_name(code));
+  if(code == Error_code::TOO_FAR_FROM_SURFACE)
+    PVF_FUZZ_CHECK(!(result.max_distance <= result.distance_bound), "TOO_FAR_FROM_SURFACE within distance_bound");
   if(code != Error_code::SUCCESS)
   {
     PVF_FUZZ_CHECK(same_points(before, points_of(qm)), "a failed planarization moved the points: " + code_name(code));

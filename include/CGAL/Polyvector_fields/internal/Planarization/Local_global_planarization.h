@@ -20,7 +20,9 @@
 //   with b_j = (1 - beta) D_j X.
 // The matrix C^T C + wc I + wf D^T D does not change: it is factored once by
 // the solver's Sparse_factorization (real symmetric positive definite), and
-// every iteration solves for the three coordinates at once.
+// every iteration solves for the three coordinates at once. Once beta is at
+// its floor, a vertex farther than the distance bound ends the iterations
+// (TOO_FAR_FROM_SURFACE): nothing pulls it back any more.
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
@@ -68,6 +70,9 @@ struct Planarization_parameters
 
 // The default of max_distance_to_surface, as a fraction of the mean quad edge length.
 constexpr double default_distance_fraction = 0.05;
+// The floor of beta: the pull towards the surface never falls below this
+// fraction of its first strength.
+constexpr double closeness_floor = 1e-3;
 
 inline Error_code check_planarization_parameters(const Planarization_parameters& p)
 {
@@ -353,11 +358,19 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   std::vector<Eigen::Matrix<double, 4, 3> > projected;
   while(mx > p.threshold && it < p.max_iterations)
   {
-    ++it;
     t = Timer();
     Eigen::MatrixXd rhs = projected_quads(X, mesh.quads, p.parallel, projected);
     result.time_local += t.elapsed();
     closest_points();
+    // With the pull at its floor, nothing brings a vertex that is too far
+    // back to the surface: the iterations would only end in
+    // TOO_FAR_FROM_SURFACE, later.
+    if(beta <= closeness_floor && !(dmax <= result.distance_bound))
+    {
+      result.left_surface = true;
+      break;
+    }
+    ++it;
     // closeness (proximal, pulled by beta) and fairness (relaxed by beta)
     t = Timer();
     rhs += wc * (X + beta * (S - X));
@@ -368,18 +381,21 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
       return Error_code::SOLVER_FAILURE;
     X = Xn;
     result.time_solve += t.elapsed();
-    beta = (std::max)(1e-3, beta * p.closeness_decay);
+    beta = (std::max)(closeness_floor, beta * p.closeness_decay);
     mesh.planarity(X, mx, mean);
   }
   result.iterations = it;
   result.max_planarity_after = mx;
   result.mean_planarity_after = mean;
-  closest_points();
+  if(!result.left_surface)  // otherwise dmax is already that of X
+    closest_points();
   result.max_distance = dmax;
   result.mean_distance = dmean;
   result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
   result.converged = mx <= p.threshold;
   result.time_total = start.elapsed();
+  if(result.left_surface)
+    return Error_code::TOO_FAR_FROM_SURFACE;
   if(!result.converged)
     return Error_code::DID_NOT_CONVERGE;
   // The result is checked before it is returned: planar faces bought by

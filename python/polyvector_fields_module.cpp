@@ -1378,6 +1378,8 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
   info["status"] = code_name(code);
   info["converged"] = r.converged;
   info["left_surface"] = r.left_surface;
+  info["gauss_newton_ran"] = r.gauss_newton_ran;
+  info["gauss_newton_steps"] = r.gauss_newton_steps;
   info["iterations"] = r.iterations;
   info["threshold"] = r.threshold;
   info["max_planarity_before"] = r.max_planarity_before;

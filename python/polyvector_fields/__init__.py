@@ -344,7 +344,10 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
     """Moves the quad vertices until every quad is planar to ``threshold``, staying near the surface (V, F).
 
     Local-global iterations (best-fit planes, then one sparse solve with
-    closeness to the triangle mesh and fairness). ``max_distance_to_surface``
+    closeness to the triangle mesh and fairness); when they fail, Gauss-Newton
+    steps from the input, over the vertices and a normal per quad
+    (``info["gauss_newton_ran"]``, ``info["gauss_newton_steps"]``).
+    ``max_distance_to_surface``
     bounds how far a vertex may end from the surface (default 5% of the mean
     quad edge). When the threshold is not reached (``info["status"]`` is
     ``"DID_NOT_CONVERGE"`` or ``"TOO_FAR_FROM_SURFACE"``), the quad mesh is

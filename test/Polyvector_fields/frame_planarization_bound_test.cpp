@@ -15,6 +15,7 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/parameters.h>
 #include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
@@ -24,6 +25,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -106,7 +108,8 @@ void saddle(Mesh& quads, Mesh& reference)
 
 // The same planarization with a bound it cannot keep and one it keeps: the
 // first is TOO_FAR_FROM_SURFACE with the mesh untouched and the worst
-// distance reported; the second succeeds and its mesh is that far. The
+// distance reported (the local-global iterations alone: no Gauss-Newton
+// step); the second succeeds and its mesh is that far. The
 // threshold, 2%, is reached before the pull towards the surface is at its
 // floor (66 iterations), so that both runs make the same iterations.
 TEST(PlanarizationBound, ExplicitBound)
@@ -134,7 +137,8 @@ TEST(PlanarizationBound, ExplicitBound)
   Mesh kept = quads;
   PVF::Planarization_result r_tight;
   EXPECT_EQ(PVF::planarize_quad_mesh(kept, reference, r_tight,
-                                     P::max_distance_to_surface(tight, P::planarity_threshold(0.02))),
+                                     P::max_distance_to_surface(tight, P::planarity_threshold(0.02,
+                                                                                              P::gauss_newton_steps(0)))),
             PVF::Error_code::TOO_FAR_FROM_SURFACE);
   EXPECT_TRUE(same_points(kept, quads)) << "a failure leaves the mesh as it was";
   EXPECT_TRUE(r_tight.converged);  // the planarity was reached; the distance was not kept
@@ -145,9 +149,10 @@ TEST(PlanarizationBound, ExplicitBound)
   EXPECT_GT(r_tight.max_distance, r_tight.distance_bound);
 }
 
-// The default bound, 5% of the mean quad edge: the coarse saddle gets planar
-// only with a vertex farther than that, so its iterations stop once the pull
-// towards the surface is at its floor (an error, not a success), while a
+// The default bound, 5% of the mean quad edge: the local-global iterations
+// alone (no Gauss-Newton step) get the coarse saddle planar only with a vertex
+// farther than that, so they stop once the pull towards the surface is at its
+// floor (an error, not a success), while a
 // grid on an elliptic paraboloid, along directions close to its principal
 // ones, reaches a threshold just below its planarity (0.46%) within it.
 TEST(PlanarizationBound, DefaultBound)
@@ -158,7 +163,8 @@ TEST(PlanarizationBound, DefaultBound)
     const double edge = mean_edge_length(quads);
     Mesh planar = quads;
     PVF::Planarization_result r;
-    EXPECT_EQ(PVF::planarize_quad_mesh(planar, reference, r), PVF::Error_code::TOO_FAR_FROM_SURFACE);
+    EXPECT_EQ(PVF::planarize_quad_mesh(planar, reference, r, PVF::parameters::gauss_newton_steps(0)),
+              PVF::Error_code::TOO_FAR_FROM_SURFACE);
     EXPECT_NEAR(r.mean_edge_length, edge, 1e-12 * edge);
     EXPECT_NEAR(r.distance_bound, 0.05 * edge, 1e-12 * edge);
     EXPECT_GT(r.max_distance, 0.05 * edge);
@@ -190,7 +196,8 @@ TEST(PlanarizationBound, DefaultBound)
 // many iterations as it takes 0.9^k to get there), a vertex beyond the bound
 // stops the iterations with TOO_FAR_FROM_SURFACE. The threshold here cannot be
 // reached (1e-9): with a loose bound, or a pull that never decays, the same
-// run goes on to the iteration limit and ends in DID_NOT_CONVERGE.
+// run goes on to the iteration limit and ends in DID_NOT_CONVERGE (the
+// local-global iterations alone: no Gauss-Newton step).
 TEST(PlanarizationBound, StopsWhenTheSurfaceNoLongerPulls)
 {
   Mesh quads, reference;
@@ -206,7 +213,8 @@ TEST(PlanarizationBound, StopsWhenTheSurfaceNoLongerPulls)
   PVF::Planarization_result r;
   const double tight = 1e-6 * edge;
   EXPECT_EQ(PVF::planarize_quad_mesh(stopped, reference, r,
-                                     P::max_distance_to_surface(tight, P::planarity_threshold(1e-9)).number_of_iterations(200)),
+                                     P::max_distance_to_surface(tight, P::planarity_threshold(1e-9, P::gauss_newton_steps(0)))
+                                       .number_of_iterations(200)),
             PVF::Error_code::TOO_FAR_FROM_SURFACE);
   EXPECT_TRUE(r.left_surface);
   EXPECT_FALSE(r.converged);
@@ -218,7 +226,8 @@ TEST(PlanarizationBound, StopsWhenTheSurfaceNoLongerPulls)
   Mesh loose = quads;
   PVF::Planarization_result r_loose;
   EXPECT_EQ(PVF::planarize_quad_mesh(loose, reference, r_loose,
-                                     P::max_distance_to_surface(10 * edge, P::planarity_threshold(1e-9)).number_of_iterations(200)),
+                                     P::max_distance_to_surface(10 * edge, P::planarity_threshold(1e-9, P::gauss_newton_steps(0)))
+                                       .number_of_iterations(200)),
             PVF::Error_code::DID_NOT_CONVERGE);
   EXPECT_FALSE(r_loose.left_surface);
   EXPECT_EQ(r_loose.iterations, 200u);
@@ -227,7 +236,7 @@ TEST(PlanarizationBound, StopsWhenTheSurfaceNoLongerPulls)
   Mesh constant = quads;
   PVF::Planarization_result r_constant;
   EXPECT_EQ(PVF::planarize_quad_mesh(constant, reference, r_constant,
-                                     P::closeness_decay(1.0, P::max_distance_to_surface(tight, P::planarity_threshold(1e-9)))
+                                     P::closeness_decay(1.0, P::max_distance_to_surface(tight, P::planarity_threshold(1e-9, P::gauss_newton_steps(0))))
                                        .number_of_iterations(200)),
             PVF::Error_code::DID_NOT_CONVERGE);
   EXPECT_FALSE(r_constant.left_surface);
@@ -262,6 +271,7 @@ TEST(PlanarizationParallel, BitIdenticalToSequential)
   PVF::internal::Planarization_parameters p;
   p.threshold = 1e-6;  // not reached: 30 whole iterations, compared through every vertex
   p.max_iterations = 30;
+  p.gauss_newton_steps = 0;  // the local-global iterations alone (see the next test)
   typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Solver;
   Mesh sequential = quads, parallel = quads;
   PVF::Planarization_result rs, rp;
@@ -284,6 +294,106 @@ TEST(PlanarizationParallel, BitIdenticalToSequential)
   EXPECT_EQ(rs.max_distance, rp.max_distance);
   EXPECT_EQ(rs.mean_distance, rp.mean_distance);
   EXPECT_EQ(rs.max_displacement, rp.max_displacement);
+}
+
+// The largest planarity of the faces of `m`, measured here from its points.
+double largest_planarity(const Mesh& m)
+{
+  double largest = 0;
+  for(auto f : faces(m))
+  {
+    std::vector<std::array<double, 3> > p;
+    for(auto h : halfedges_around_face(halfedge(f, m), m))
+    {
+      const Point& q = m.point(target(h, m));
+      p.push_back({ q.x(), q.y(), q.z() });
+    }
+    largest = (std::max)(largest, PVF::quad_planarity(p[0], p[1], p[2], p[3]));
+  }
+  return largest;
+}
+
+// Where the local-global iterations alone end too far from the surface (the
+// coarse saddle, test DefaultBound), the Gauss-Newton steps that follow them
+// reach 1% within 5% of the mean quad edge: every quad and every distance is
+// measured here again from the points of the result.
+TEST(PlanarizationGaussNewton, ReachesWhatTheLocalGlobalIterationsCannot)
+{
+  Mesh quads, reference;
+  saddle(quads, reference);
+  const double edge = mean_edge_length(quads);
+  Mesh planar = quads;
+  PVF::Planarization_result r;
+  ASSERT_EQ(PVF::planarize_quad_mesh(planar, reference, r), PVF::Error_code::SUCCESS);
+  EXPECT_TRUE(r.left_surface);  // the local-global iterations stopped too far
+  EXPECT_TRUE(r.gauss_newton_ran);
+  EXPECT_GT(r.gauss_newton_steps, 0u);
+  EXPECT_LE(r.gauss_newton_steps, 50u);
+  EXPECT_TRUE(r.converged);
+  EXPECT_GT(largest_planarity(quads), 0.03);
+  const double planarity = largest_planarity(planar);
+  EXPECT_LE(planarity, 0.01);
+  EXPECT_NEAR(r.max_planarity_after, planarity, 1e-12);
+  const double d = max_distance_to(reference, planar);
+  EXPECT_LE(d, 0.05 * edge);
+  EXPECT_NEAR(r.max_distance, d, 1e-9 * edge);
+  std::cout << "saddle 4x4: " << r.gauss_newton_steps << " Gauss-Newton steps (" << r.gauss_newton_rejected_steps
+            << " rejected): planar to " << 100 * planarity << "% with every vertex within " << 100 * d / edge
+            << "% of the mean edge\n";
+}
+
+// A failure of both methods reports the local-global outcome and leaves the
+// mesh as it was; the Gauss-Newton steps are bounded by their parameter.
+TEST(PlanarizationGaussNewton, FailureReportsTheLocalGlobalOutcome)
+{
+  Mesh quads, reference;
+  saddle(quads, reference);
+  Mesh kept = quads;
+  PVF::Planarization_result r;
+  namespace P = PVF::parameters;
+  EXPECT_EQ(PVF::planarize_quad_mesh(kept, reference, r,
+                                     P::planarity_threshold(1e-9, P::gauss_newton_steps(2)).number_of_iterations(5)),
+            PVF::Error_code::DID_NOT_CONVERGE);
+  EXPECT_TRUE(same_points(kept, quads));
+  EXPECT_EQ(r.iterations, 5u);
+  EXPECT_TRUE(r.gauss_newton_ran);
+  EXPECT_LE(r.gauss_newton_steps, 2u);
+  EXPECT_FALSE(r.converged);
+  EXPECT_GT(r.max_planarity_after, 1e-9);
+  EXPECT_GT(r.gauss_newton_max_planarity, 1e-9);
+}
+
+// The Gauss-Newton steps on the cores give the same numbers as on one core,
+// bit for bit (each quad's blocks and each vertex's closest point are
+// computed alone, and summed in order): the 48 x 48 grid of the test above,
+// after 5 local-global iterations that do not reach the threshold.
+TEST(PlanarizationGaussNewton, ParallelBitIdenticalToSequential)
+{
+  Mesh quads, reference;
+  height_field_grid(48, [](double x, double y) { return 0.3 * std::sin(3 * x) * std::cos(2 * y) + 0.2 * x * y; }, quads,
+                    reference);
+  PVF::internal::Planarization_parameters p;
+  p.threshold = 1e-6;  // reached by neither method: 5 iterations, then 3 steps
+  p.max_iterations = 5;
+  p.gauss_newton_steps = 3;
+  Mesh sequential = quads, parallel = quads;
+  PVF::Planarization_result rs, rp;
+  p.parallel = false;
+  ASSERT_EQ(PVF::internal::planarize_quad_mesh(sequential, reference, get(CGAL::vertex_point, sequential),
+                                               get(CGAL::vertex_point, reference), p, PVF::Default_real_sparse_solver(), rs),
+            PVF::Error_code::DID_NOT_CONVERGE);
+  p.parallel = true;
+  ASSERT_EQ(PVF::internal::planarize_quad_mesh(parallel, reference, get(CGAL::vertex_point, parallel),
+                                               get(CGAL::vertex_point, reference), p, PVF::Default_real_sparse_solver(), rp),
+            PVF::Error_code::DID_NOT_CONVERGE);
+  EXPECT_TRUE(rs.gauss_newton_ran);
+  EXPECT_EQ(rs.gauss_newton_steps, 3u);
+  EXPECT_GT(rs.gauss_newton_max_planarity, 0);
+  EXPECT_GT(rs.gauss_newton_max_distance, 0);
+  EXPECT_EQ(rs.gauss_newton_steps, rp.gauss_newton_steps);
+  EXPECT_EQ(rs.gauss_newton_rejected_steps, rp.gauss_newton_rejected_steps);
+  EXPECT_EQ(rs.gauss_newton_max_planarity, rp.gauss_newton_max_planarity);
+  EXPECT_EQ(rs.gauss_newton_max_distance, rp.gauss_newton_max_distance);
 }
 
 } // namespace pvf_frame_planarization_bound_test

@@ -271,15 +271,22 @@ TEST(OpenMesh, MeshingRoadMatchesSurfaceMesh)
   EXPECT_EQ(largest_difference(o.uv, s.uv), 0.0);
   EXPECT_EQ(o.quads, s.quads);
   EXPECT_EQ(o.quad_vertices, s.quad_vertices);
-  // the planarization ran its iterations (3 do not reach 1% here) against
-  // each reference surface: the same quads, point by point
-  EXPECT_TRUE(s.planarization == PVF::Error_code::SUCCESS || s.planarization == PVF::Error_code::DID_NOT_CONVERGE);
+  // the planarization ran its iterations (3 do not reach 1% here, then its
+  // Gauss-Newton steps) against each reference surface: the same quads, point
+  // by point, to rounding. Not bit for bit: a closest point on an edge shared
+  // by two triangles is projected onto either, depending on where the AABB
+  // tree's search starts, which depends on the first halfedge of each face;
+  // the Gauss-Newton steps query many such points (on fandisk's creases).
+  EXPECT_EQ(s.planarization, PVF::Error_code::SUCCESS);
   EXPECT_GT(s.planarity_after, 0.0);
+  EXPECT_LE(s.planarity_after, 0.01);
   EXPECT_GT(s.max_distance, 0.0);
   EXPECT_EQ(o.planarization, s.planarization);
-  EXPECT_EQ(o.planarity_after, s.planarity_after);
-  EXPECT_EQ(o.max_distance, s.max_distance);
-  EXPECT_EQ(largest_difference(o.quad_points, s.quad_points), 0.0);
+  EXPECT_NEAR(o.planarity_after, s.planarity_after, 1e-6);
+  EXPECT_NEAR(o.max_distance, s.max_distance, 1e-6 * h);
+  EXPECT_LE(largest_difference(o.quad_points, s.quad_points), 1e-6 * h);
+  std::cout << "planarized quads, OpenMesh against Surface_mesh: points " << largest_difference(o.quad_points, s.quad_points)
+            << " apart at most (quad size " << h << ")\n";
 }
 
 TEST(OpenMesh, DesignRootsSingularitiesAndEnergy)

@@ -257,7 +257,14 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
     if(q.planarized)
     {
       const PVF::Planarization_result& r = q.planarization;
-      if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE && r.left_surface)
+      if(q.planarization_code == PVF::Error_code::SUCCESS && r.gauss_newton_ran)
+        std::cout << " -> after " << r.iterations << " local-global iterations (they "
+                  << (r.left_surface ? "left the surface" : "failed") << ") and " << r.gauss_newton_steps
+                  << " Gauss-Newton steps (" << r.gauss_newton_rejected_steps << " rejected) max " << 100 * q.after.max
+                  << "%, mean " << 100 * q.after.mean << "% (threshold " << 100 * r.threshold
+                  << "%); largest distance to the surface " << r.max_distance << " ("
+                  << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";
+      else if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE && r.left_surface)
         std::cout << "; the planarization stopped after " << r.iterations << " iterations at max "
                   << 100 * r.max_planarity_after << "%, mean " << 100 * r.mean_planarity_after
                   << "%: a vertex was " << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length
@@ -277,6 +284,10 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
         std::cout << "; the planarization did NOT reach " << 100 * r.threshold << "% in " << r.iterations
                   << " iterations (it got to max " << 100 * r.max_planarity_after << "%, mean "
                   << 100 * r.mean_planarity_after << "%): the quad mesh is written as extracted";
+      if(q.planarization_code != PVF::Error_code::SUCCESS && r.gauss_newton_ran)
+        std::cout << "; then " << r.gauss_newton_steps << " Gauss-Newton steps (" << r.gauss_newton_rejected_steps
+                  << " rejected) got to max " << 100 * r.gauss_newton_max_planarity << "% with a vertex "
+                  << 100 * r.gauss_newton_max_distance / r.mean_edge_length << "% of the mean quad edge away";
     }
     std::cout << "\n";
   }

@@ -130,6 +130,9 @@ CGAL_PVF_ADD_NAMED_PARAMETER(closeness_decay_t, closeness_decay, closeness_decay
 // `double > 0`, in mesh units: the largest distance from a vertex of the result of `planarize_quad_mesh()`
 // to the reference surface; default 5% of the mean edge length of the input quad mesh.
 CGAL_PVF_ADD_NAMED_PARAMETER(max_distance_to_surface_t, max_distance_to_surface, max_distance_to_surface)
+// `std::size_t`: the largest number of kept steps of the Gauss-Newton method that `planarize_quad_mesh()` runs
+// when its local-global iterations fail; default 50, 0 for none.
+CGAL_PVF_ADD_NAMED_PARAMETER(gauss_newton_steps_t, gauss_newton_steps, gauss_newton_steps)
 
 // Curvature estimation and curvature constraints.
 CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)

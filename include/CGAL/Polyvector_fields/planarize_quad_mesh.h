@@ -38,7 +38,7 @@ struct Planarization_result
 {
   std::size_t iterations = 0;                  ///< local-global iterations done
   bool converged = false;                      ///< every face reached `planarity_threshold`
-  bool left_surface = false;                   ///< the iterations stopped before the threshold: with the pull towards the surface at its floor, a vertex was farther than `distance_bound` from it (`Error_code::TOO_FAR_FROM_SURFACE`)
+  bool left_surface = false;                   ///< the local-global iterations stopped before the threshold: with the pull towards the surface at its floor, a vertex was farther than `distance_bound` from it (their outcome `Error_code::TOO_FAR_FROM_SURFACE`, unless the second method succeeds)
   double threshold = 0;                        ///< `planarity_threshold` used
   double max_planarity_before = 0;             ///< largest face planarity of the input
   double mean_planarity_before = 0;            ///< mean face planarity of the input
@@ -51,12 +51,18 @@ struct Planarization_result
   double mean_edge_length = 0;                 ///< mean edge length of the input quad mesh
   double max_displacement = 0;                 ///< largest vertex motion
   std::size_t fairness_rows = 0;               ///< second differences in the fairness term
+  bool gauss_newton_ran = false;               ///< the local-global iterations failed and the Gauss-Newton method ran
+  std::size_t gauss_newton_steps = 0;          ///< its kept steps
+  std::size_t gauss_newton_rejected_steps = 0; ///< its rejected steps (the energy did not fall)
+  double gauss_newton_max_planarity = 0;       ///< largest face planarity of its last kept iterate
+  double gauss_newton_max_distance = 0;        ///< largest distance of a vertex of its last kept iterate to the reference
   // times in seconds
   double time_tree = 0;            ///< the AABB tree of the reference
   double time_factorization = 0;   ///< assembly and factorization of the fixed matrix
   double time_local = 0;           ///< best-fit planes (all iterations)
   double time_closest = 0;         ///< closest points on the reference (all iterations)
   double time_solve = 0;           ///< right-hand sides and solves (all iterations)
+  double time_gauss_newton = 0;    ///< the Gauss-Newton method, when it ran
   double time_total = 0;  ///< the whole call
 };
 
@@ -85,9 +91,28 @@ struct Planarization_result
 ///
 /// Once `beta` is at its floor, the surface no longer pulls a vertex back: if
 /// one is then farther than `max_distance_to_surface`, the iterations stop
-/// there with `Error_code::TOO_FAR_FROM_SURFACE` and
-/// `Planarization_result::left_surface` set, instead of running on to
-/// `number_of_iterations` towards the same error.
+/// there (`Planarization_result::left_surface`), instead of running on to
+/// `number_of_iterations` towards the same failure.
+///
+/// <b>Second method</b> (after Tang et al. 2014). When the local-global iterations end
+/// short of the threshold or too far from the surface, a Gauss-Newton
+/// (Levenberg-Marquardt) minimization starts again from the input, over the vertices and a
+/// unit normal `n_f` per quad, of
+/// `sum_f w_f sum_{edges ab of f} (n_f . (x_b - x_a))^2 + sum_f (|n_f|^2 - 1)^2
+/// + sum_i c_i ((m_i . (x_i - s_i))^2 + t |x_i - s_i|^2) + g |D (X - X_0)|^2`, in units of the
+/// mean quad edge, `s_i` the closest point of the reference and `m_i` the unit normal of the
+/// input quad mesh at vertex `i` (the sum of the cross products of the diagonals of its
+/// quads), so that vertices may slide along the surface (`t` = `g` = 1e-3). A step is
+/// kept only if this energy falls. After each kept step, `w_f` doubles on every quad
+/// above 0.8 times the threshold and `c_i` on every vertex farther than 0.8 times
+/// `max_distance_to_surface` (both start at 1 and stay below 1e4), until every quad is
+/// within the threshold and every vertex within the bound, or `gauss_newton_steps` steps.
+/// Each step factors a system of the three coordinates of every vertex (the
+/// normals are eliminated quad by quad), so a step costs about nine times a
+/// local-global factorization; on success its result replaces the local-global one,
+/// otherwise the local-global failure is returned and
+/// `Planarization_result::gauss_newton_max_planarity` and
+/// `Planarization_result::gauss_newton_max_distance` tell how far it got.
 ///
 /// That matrix is real, symmetric and positive definite; it is factored through
 /// `Sparse_factorization<SolverTraits, double>` for the solver of the named parameter
@@ -143,9 +168,16 @@ struct Planarization_result
 ///     \cgalParamDefault{5% of the mean edge length of the input quad mesh (`Planarization_result::mean_edge_length`)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the largest number of iterations}
+///     \cgalParamDescription{the largest number of local-global iterations}
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{500}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{gauss_newton_steps}
+///     \cgalParamDescription{the largest number of kept steps of the second method, which runs when the
+///                           local-global iterations fail; 0 runs none; given with
+///                           `Polyvector_fields::parameters::gauss_newton_steps()`}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{50}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{the sparse solver of the fixed matrix, through its model of
@@ -164,11 +196,12 @@ struct Planarization_result
 ///
 /// \returns `Error_code::SUCCESS` (then `qm` holds the planarized mesh); `EMPTY_MESH` (either mesh);
 ///          `NON_QUAD_FACE`; `NON_TRIANGLE_FACE` (reference); `NON_FINITE_VALUE` (a parameter or a coordinate);
-///          `INVALID_PARAMETER` (a parameter out of its range); `SOLVER_FAILURE`; `DID_NOT_CONVERGE` when
-///          `number_of_iterations` iterations did not reach the threshold; `TOO_FAR_FROM_SURFACE` when they
-///          reached it with a vertex farther than `max_distance_to_surface` from `reference`, or stopped
-///          before it with such a vertex and the pull towards the surface at its floor
-///          (`Planarization_result::left_surface`; `Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
+///          `INVALID_PARAMETER` (a parameter out of its range); `SOLVER_FAILURE`; and when the second method
+///          did not succeed either (or did not run), the outcome of the local-global iterations:
+///          `DID_NOT_CONVERGE` when `number_of_iterations` iterations did not reach the threshold;
+///          `TOO_FAR_FROM_SURFACE` when they reached it with a vertex farther than `max_distance_to_surface`
+///          from `reference`, or stopped before it with such a vertex and the pull towards the surface at its
+///          floor (`Planarization_result::left_surface`; `Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
 ///          `result` holds the measurements either way.
 ///
 /// \sa `quad_planarity()`, `extract_quad_mesh()`
@@ -193,6 +226,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, P
   p.fairness_weight = choose_parameter(get_parameter(np, internal_np::fairness_weight), p.fairness_weight);
   p.closeness_decay = choose_parameter(get_parameter(np, internal_np::closeness_decay), p.closeness_decay);
   p.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), p.max_iterations);
+  p.gauss_newton_steps = choose_parameter(get_parameter(np, internal_np::gauss_newton_steps), p.gauss_newton_steps);
   p.distance_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::max_distance_to_surface_t>::value;
   p.max_distance_to_surface = choose_parameter(get_parameter(np, internal_np::max_distance_to_surface), 0.0);
   const Solver solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver());

@@ -220,8 +220,10 @@ PVF_FUZZ_TARGET(planarize)
     PVF_FUZZ_CHECK(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE ||
                      code == Error_code::TOO_FAR_FROM_SURFACE || code == Error_code::SOLVER_FAILURE,
                    "undocumented code " + code_name(code));
-  PVF_FUZZ_CHECK(!result.left_surface || code == Error_code::TOO_FAR_FROM_SURFACE,
+  PVF_FUZZ_CHECK(!result.left_surface || code == Error_code::TOO_FAR_FROM_SURFACE ||
+                   (code == Error_code::SUCCESS && result.gauss_newton_ran),
                  "left_surface with " + code_name(code));
+  PVF_FUZZ_CHECK(result.gauss_newton_steps <= 50, std::to_string(result.gauss_newton_steps) + " Gauss-Newton steps");
   if(code == Error_code::TOO_FAR_FROM_SURFACE)
     PVF_FUZZ_CHECK(!(result.max_distance <= result.distance_bound), "TOO_FAR_FROM_SURFACE within distance_bound");
   if(code != Error_code::SUCCESS)

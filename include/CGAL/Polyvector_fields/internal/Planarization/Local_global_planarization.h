@@ -27,6 +27,7 @@
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
 #include <CGAL/Polyvector_fields/internal/Face_numbering.h>
+#include <CGAL/Polyvector_fields/internal/Planarization/Gauss_newton_planarization.h>
 #include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 
@@ -57,6 +58,10 @@ struct Planarization_parameters
   double fairness_weight = 0.1;    // wf
   double closeness_decay = 0.9;    // the factor of beta at each iteration
   std::size_t max_iterations = 500;
+  // the largest number of kept steps of the Gauss-Newton method that runs
+  // when the local-global iterations fail (Gauss_newton_planarization.h);
+  // 0: none
+  std::size_t gauss_newton_steps = 50;
   // The local step and the closest points shared among the cores (TBB):
   // the same numbers as one core, bit for bit (each quad and each vertex is
   // computed alone, and the sums are made in order afterwards).
@@ -205,6 +210,34 @@ public:
     m_tree.accelerate_distance_queries();
   }
 
+  // For the Gauss-Newton method: the closest points S of the rows of Y and
+  // their distances, each query hinted by the previous answer of this method
+  // for the same row (the first ones by the tree's own search). The queries
+  // are shared among the cores with `parallel`.
+  void hinted_by_own(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, std::vector<double>& distance, bool parallel)
+  {
+    const std::size_t n = std::size_t(Y.rows());
+    const bool hinted = std::size_t(m_own_hints.rows()) == n;
+    if(!hinted)
+      m_own_hints.resize(Y.rows(), 3);
+    distance.resize(n);
+    for_each_range(parallel, n, 1024, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const Eigen::Index r = Eigen::Index(i);
+        const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
+        const typename K::Point_3 s =
+          hinted ? m_tree.closest_point(q, typename K::Point_3(m_own_hints(r, 0), m_own_hints(r, 1), m_own_hints(r, 2)))
+                 : m_tree.closest_point(q);
+        m_own_hints(r, 0) = CGAL::to_double(s.x());
+        m_own_hints(r, 1) = CGAL::to_double(s.y());
+        m_own_hints(r, 2) = CGAL::to_double(s.z());
+        distance[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
+      }
+    });
+    S = m_own_hints;
+  }
+
   // S receives the closest points of the rows of Y; mx and mean the largest
   // and the mean distance.
   // The queries are independent (the tree is only read): with `parallel`,
@@ -244,6 +277,7 @@ private:
   Tree m_tree;
   bool m_have_hint = false;
   std::vector<double> m_distance;
+  Eigen::MatrixXd m_own_hints;
 };
 
 // The fixed matrix C^T C + wc I + wf D^T D; DtD receives D^T D.
@@ -393,15 +427,47 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   result.mean_distance = dmean;
   result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
   result.converged = mx <= p.threshold;
-  result.time_total = start.elapsed();
+  Error_code code = Error_code::SUCCESS;
   if(result.left_surface)
-    return Error_code::TOO_FAR_FROM_SURFACE;
-  if(!result.converged)
-    return Error_code::DID_NOT_CONVERGE;
+    code = Error_code::TOO_FAR_FROM_SURFACE;
+  else if(!result.converged)
+    code = Error_code::DID_NOT_CONVERGE;
   // The result is checked before it is returned: planar faces bought by
   // leaving the surface are not a success.
-  if(!(dmax <= result.distance_bound))
-    return Error_code::TOO_FAR_FROM_SURFACE;
+  else if(!(dmax <= result.distance_bound))
+    code = Error_code::TOO_FAR_FROM_SURFACE;
+  if(code != Error_code::SUCCESS && p.gauss_newton_steps > 0 && result.mean_edge_length > 0)
+  {
+    // The second method, from the input: on success its result replaces the
+    // local-global one; otherwise the local-global failure is reported.
+    Eigen::MatrixXd Xg;
+    auto closest_points_of = [&](const Eigen::MatrixXd& Y, Eigen::MatrixXd& S_, std::vector<double>& d_) {
+      closest.hinted_by_own(Y, S_, d_, p.parallel);
+    };
+    Gauss_newton_report g;
+    gauss_newton_planarization(X0, mesh.quads, rows, result.mean_edge_length, p.threshold, result.distance_bound,
+                               p.gauss_newton_steps, p.parallel, solver, closest_points_of, Xg, g);
+    result.gauss_newton_ran = true;
+    result.gauss_newton_steps = g.steps;
+    result.gauss_newton_rejected_steps = g.rejected;
+    result.gauss_newton_max_planarity = g.max_planarity;
+    result.gauss_newton_max_distance = g.max_distance;
+    result.time_gauss_newton = g.time;
+    if(g.succeeded)
+    {
+      X = Xg;
+      result.converged = true;
+      result.max_planarity_after = g.max_planarity;
+      result.mean_planarity_after = g.mean_planarity;
+      result.max_distance = g.max_distance;
+      result.mean_distance = g.mean_distance;
+      result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
+      code = Error_code::SUCCESS;
+    }
+  }
+  result.time_total = start.elapsed();
+  if(code != Error_code::SUCCESS)
+    return code;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   for(std::size_t i = 0; i < n; ++i)
     put(vpm, mesh.descriptors[i], Point(X(Eigen::Index(i), 0), X(Eigen::Index(i), 1), X(Eigen::Index(i), 2)));

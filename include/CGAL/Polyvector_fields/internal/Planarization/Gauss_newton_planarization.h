@@ -1,0 +1,410 @@
+// Copyright (c) 2026 CGAL Polyvector Fields contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): CGAL Polyvector Fields developers
+//
+// This file is part of CGAL Polyvector Fields, a package that builds on CGAL.
+// It is not part of CGAL.
+
+#ifndef CGAL_POLYVECTOR_FIELDS_INTERNAL_PLANARIZATION_GAUSS_NEWTON_PLANARIZATION_H
+#define CGAL_POLYVECTOR_FIELDS_INTERNAL_PLANARIZATION_GAUSS_NEWTON_PLANARIZATION_H
+
+// The second method of planarize_quad_mesh(), run when the local-global
+// iterations end short of the threshold or too far from the surface: a
+// Levenberg-Marquardt minimization over the vertices x_i and one normal n_f
+// per quad (after Tang, Sun, Gomes, Wallner and Pottmann 2014), in units of
+// the mean quad edge, of
+//   sum_f w_f sum_{edges ab of f} (n_f . (x_b - x_a))^2 + sum_f (|n_f|^2 - 1)^2
+//   + sum_i c_i ((m_i . (x_i - s_i))^2 + t |x_i - s_i|^2) + g |D (X - X0)|^2,
+// s_i the closest point of x_i on the reference, m_i the unit normal of the
+// input quad mesh at vertex i (the normalized sum of the cross products of the
+// diagonals of its quads), so that the vertices may slide along the surface,
+// D the second differences of the fairness term of the local-global method.
+// Each step eliminates the normals quad by quad (3 x 3 blocks) and factors the
+// 3n x 3n system of the vertices, whose pattern is analyzed once; a step is
+// kept only if the energy (with the closest points of the new positions)
+// falls, and lambda is then halved, otherwise multiplied by 4. After
+// each kept step, w_f doubles on every quad above 0.8 of the threshold and c_i
+// on every vertex farther than 0.8 of the distance bound (both at most 1e4):
+// plain least squares trade a few stubborn quads and vertices against all the
+// others, and stall above the bounds.
+
+#include <CGAL/Polyvector_fields/Error_code.h>
+#include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/parallel.h>
+#include <CGAL/Polyvector_fields/quad_planarity.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polyvector_fields {
+namespace internal {
+
+// The fixed constants of the method (documented in the manual, Section on quad meshes).
+struct Gauss_newton_constants
+{
+  static constexpr double tangential_weight = 1e-3;  // t
+  static constexpr double fairness_weight = 1e-3;    // g
+  static constexpr double first_lambda = 1e-3;
+  static constexpr double largest_lambda = 1e10;     // beyond it the method is stuck
+  static constexpr double reweighting_fraction = 0.8;
+  static constexpr double largest_weight = 1e4;
+  static constexpr int attempts_per_step = 12;
+};
+
+// What the method did; positions and measures of its last kept iterate.
+struct Gauss_newton_report
+{
+  bool ran = false;
+  bool succeeded = false;
+  std::size_t steps = 0;         // kept steps
+  std::size_t rejected = 0;      // rejected attempts
+  double max_planarity = 0;
+  double mean_planarity = 0;
+  double max_distance = 0;       // mesh units
+  double mean_distance = 0;      // mesh units
+  double time = 0;
+};
+
+// The largest and mean planarity of the quads at positions Y (rows), and
+// each quad's planarity in `each`.
+inline void planarity_of_quads(const Eigen::MatrixXd& Y, const std::vector<std::array<std::size_t, 4> >& quads,
+                               std::vector<double>& each, double& mx, double& mean)
+{
+  each.resize(quads.size());
+  mx = 0;
+  double sum = 0;
+  for(std::size_t f = 0; f < quads.size(); ++f)
+  {
+    std::array<std::array<double, 3>, 4> p;
+    for(int k = 0; k < 4; ++k)
+      p[k] = { Y(Eigen::Index(quads[f][k]), 0), Y(Eigen::Index(quads[f][k]), 1), Y(Eigen::Index(quads[f][k]), 2) };
+    each[f] = quad_planarity(p[0], p[1], p[2], p[3]);
+    mx = (std::max)(mx, each[f]);
+    sum += each[f];
+  }
+  mean = quads.empty() ? 0 : sum / double(quads.size());
+}
+
+// `closest(X, S, distance)` gives, for the rows of X (mesh units), the
+// closest points S and their distances.
+// X0: the input positions; edge: the mean quad edge; bound: the distance
+// bound (mesh units). On success X holds the result (mesh units).
+template <typename SolverTraits, typename Closest>
+void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std::array<std::size_t, 4> >& quads,
+                                const std::vector<std::array<std::size_t, 3> >& rows, double edge, double threshold,
+                                double bound, std::size_t max_steps, bool parallel, const SolverTraits& solver,
+                                Closest& closest, Eigen::MatrixXd& X, Gauss_newton_report& report)
+{
+  typedef Gauss_newton_constants C;
+  typedef Eigen::Matrix<double, 12, 12> Matrix12;
+  typedef Eigen::Matrix<double, 12, 1> Vector12;
+  typedef Eigen::Matrix<double, 3, 12> Matrix3x12;
+  const Timer start;
+  report = Gauss_newton_report();
+  report.ran = true;
+  const std::size_t n = std::size_t(X0.rows()), F = quads.size();
+  const Eigen::Index N3 = Eigen::Index(3 * n);
+  const int edge_ends[4][2] = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  const Eigen::MatrixXd Y0 = X0 / edge;
+  const double scaled_bound = bound / edge;
+  Eigen::MatrixXd Y = Y0;
+
+  // the normals of the best-fit planes
+  Eigen::MatrixXd Nf(Eigen::Index(F), 3);
+  for(std::size_t f = 0; f < F; ++f)
+  {
+    Eigen::Matrix<double, 4, 3> P;
+    for(int k = 0; k < 4; ++k)
+      P.row(k) = Y.row(Eigen::Index(quads[f][k]));
+    const Eigen::Matrix<double, 4, 3> Q = P.rowwise() - P.colwise().mean();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(Q.transpose() * Q);
+    Nf.row(Eigen::Index(f)) = es.eigenvectors().col(0).transpose();
+  }
+
+  // the normals of the input quad mesh at its vertices (fixed)
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(Eigen::Index(n), 3);
+  for(const auto& q : quads)
+  {
+    const Eigen::RowVector3d d1 = Y.row(Eigen::Index(q[2])) - Y.row(Eigen::Index(q[0]));
+    const Eigen::RowVector3d d2 = Y.row(Eigen::Index(q[3])) - Y.row(Eigen::Index(q[1]));
+    const Eigen::RowVector3d c = d1.cross(d2);
+    for(int k = 0; k < 4; ++k)
+      M.row(Eigen::Index(q[std::size_t(k)])) += c;
+  }
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double length = M.row(Eigen::Index(i)).norm();
+    if(length > 0)
+      M.row(Eigen::Index(i)) /= length;
+  }
+
+  // closest points in units of the edge
+  Eigen::MatrixXd S;
+  std::vector<double> distance;
+  auto closest_at = [&](const Eigen::MatrixXd& Yc, Eigen::MatrixXd& Sc, std::vector<double>& dc) {
+    const Eigen::MatrixXd Xc = Yc * edge;
+    closest(Xc, Sc, dc);
+    Sc /= edge;
+    for(double& d : dc)
+      d /= edge;
+  };
+  closest_at(Y, S, distance);
+
+  // the fairness operator D and D^T D
+  Eigen::SparseMatrix<double> D(Eigen::Index(rows.size()), Eigen::Index(n));
+  {
+    std::vector<Eigen::Triplet<double> > T;
+    for(std::size_t r = 0; r < rows.size(); ++r)
+    {
+      T.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][0]), 1.0);
+      T.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][1]), -2.0);
+      T.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][2]), 1.0);
+    }
+    D.setFromTriplets(T.begin(), T.end());
+  }
+  const Eigen::SparseMatrix<double> DtD = (D.transpose() * D).pruned();
+
+  // the pattern of the vertex system, and the slot of every entry a quad adds
+  Eigen::SparseMatrix<double> A(N3, N3);
+  {
+    std::vector<Eigen::Triplet<double> > T;
+    T.reserve(F * 144 + 9 * n + 3 * std::size_t(DtD.nonZeros()));
+    for(const auto& q : quads)
+      for(int a = 0; a < 4; ++a)
+        for(int b = 0; b < 4; ++b)
+          for(int c = 0; c < 3; ++c)
+            for(int d = 0; d < 3; ++d)
+              T.emplace_back(Eigen::Index(3 * q[a] + c), Eigen::Index(3 * q[b] + d), 0.0);
+    for(std::size_t i = 0; i < n; ++i)
+      for(int c = 0; c < 3; ++c)
+        for(int d = 0; d < 3; ++d)
+          T.emplace_back(Eigen::Index(3 * i + c), Eigen::Index(3 * i + d), 0.0);
+    for(Eigen::Index k = 0; k < DtD.outerSize(); ++k)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(DtD, k); it; ++it)
+        for(int c = 0; c < 3; ++c)
+          T.emplace_back(3 * it.row() + c, 3 * it.col() + c, 0.0);
+    A.setFromTriplets(T.begin(), T.end());
+    A.makeCompressed();
+  }
+  auto slot = [&A](Eigen::Index r, Eigen::Index c) {
+    const int* begin = A.innerIndexPtr() + A.outerIndexPtr()[c];
+    const int* end = A.innerIndexPtr() + A.outerIndexPtr()[c + 1];
+    return std::size_t(std::lower_bound(begin, end, int(r)) - A.innerIndexPtr());
+  };
+  std::vector<std::size_t> quad_slots(F * 144);
+  for_each_range(parallel, F, 1024, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
+      for(int a = 0; a < 4; ++a)
+        for(int b = 0; b < 4; ++b)
+          for(int c = 0; c < 3; ++c)
+            for(int d = 0; d < 3; ++d)
+              quad_slots[f * 144 + std::size_t((3 * a + c) * 12 + 3 * b + d)] =
+                slot(Eigen::Index(3 * quads[f][a] + c), Eigen::Index(3 * quads[f][b] + d));
+  });
+  std::vector<std::size_t> vertex_slots(n * 9);
+  for(std::size_t i = 0; i < n; ++i)
+    for(int c = 0; c < 3; ++c)
+      for(int d = 0; d < 3; ++d)
+        vertex_slots[i * 9 + std::size_t(3 * c + d)] = slot(Eigen::Index(3 * i + c), Eigen::Index(3 * i + d));
+  std::vector<std::size_t> fairness_slots;
+  std::vector<double> fairness_values;
+  for(Eigen::Index k = 0; k < DtD.outerSize(); ++k)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(DtD, k); it; ++it)
+      for(int c = 0; c < 3; ++c)
+      {
+        fairness_slots.push_back(slot(3 * it.row() + c, 3 * it.col() + c));
+        fairness_values.push_back(C::fairness_weight * it.value());
+      }
+
+  std::vector<double> w(F, 1.0), cw(n, 1.0);
+  auto energy = [&](const Eigen::MatrixXd& Yc, const Eigen::MatrixXd& Nc, const Eigen::MatrixXd& Sc,
+                    const Eigen::MatrixXd& Mc) {
+    double e = 0;
+    for(std::size_t f = 0; f < F; ++f)
+    {
+      const Eigen::RowVector3d nf = Nc.row(Eigen::Index(f));
+      for(int k = 0; k < 4; ++k)
+      {
+        const double r = nf.dot(Yc.row(Eigen::Index(quads[f][std::size_t(edge_ends[k][1])])) -
+                                 Yc.row(Eigen::Index(quads[f][std::size_t(edge_ends[k][0])])));
+        e += w[f] * r * r;
+      }
+      const double u = nf.squaredNorm() - 1;
+      e += u * u;
+    }
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Eigen::RowVector3d d = Yc.row(Eigen::Index(i)) - Sc.row(Eigen::Index(i));
+      const double c = Mc.row(Eigen::Index(i)).dot(d);
+      e += cw[i] * (c * c + C::tangential_weight * d.squaredNorm());
+    }
+    e += C::fairness_weight * (D * (Yc - Y0)).squaredNorm();
+    return e;
+  };
+
+  typedef Sparse_factorization<SolverTraits, double> Factorization;
+  Factorization factorization(solver);
+  bool analyzed = false;
+  std::vector<double> planarity;
+  double mx = 0, mean = 0;
+  planarity_of_quads(Y, quads, planarity, mx, mean);
+  auto largest = [](const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); };
+  double e_current = energy(Y, Nf, S, M);
+  double lambda = C::first_lambda;
+
+  std::vector<Eigen::Matrix3d> Hnn(F), Hinv(F);
+  std::vector<Matrix3x12> Hnv(F);
+  std::vector<Eigen::Vector3d> gn(F);
+  std::vector<Matrix12> Hvv(F), Sf(F);
+  std::vector<Vector12> gv(F), bf(F);
+  bool within = mx <= threshold && largest(distance) <= scaled_bound;
+  while(!within && report.steps < max_steps && lambda <= C::largest_lambda)
+  {
+    // the Gauss-Newton blocks of each quad, at the current point
+    for_each_range(parallel, F, 512, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        const auto& q = quads[f];
+        const Eigen::Vector3d nf = Nf.row(Eigen::Index(f)).transpose();
+        Eigen::Matrix<double, 5, 15> J = Eigen::Matrix<double, 5, 15>::Zero();
+        Eigen::Matrix<double, 5, 1> r;
+        const double sw = std::sqrt(w[f]);
+        for(int k = 0; k < 4; ++k)
+        {
+          const int a = edge_ends[k][0], b = edge_ends[k][1];
+          const Eigen::Vector3d d = (Y.row(Eigen::Index(q[std::size_t(b)])) - Y.row(Eigen::Index(q[std::size_t(a)]))).transpose();
+          r(k) = sw * nf.dot(d);
+          J.block<1, 3>(k, 0) = sw * d.transpose();
+          J.block<1, 3>(k, 3 + 3 * b) = sw * nf.transpose();
+          J.block<1, 3>(k, 3 + 3 * a) = -sw * nf.transpose();
+        }
+        r(4) = nf.squaredNorm() - 1;
+        J.block<1, 3>(4, 0) = 2 * nf.transpose();
+        const Eigen::Matrix<double, 15, 15> H = J.transpose() * J;
+        const Eigen::Matrix<double, 15, 1> g = J.transpose() * r;
+        Hnn[f] = H.block<3, 3>(0, 0);
+        Hnv[f] = H.block<3, 12>(0, 3);
+        Hvv[f] = H.block<12, 12>(3, 3);
+        gn[f] = g.head<3>();
+        gv[f] = g.tail<12>();
+      }
+    });
+    const Eigen::MatrixXd fair_gradient = C::fairness_weight * (DtD * (Y - Y0));
+    bool kept = false;
+    for(int attempt = 0; attempt < C::attempts_per_step && lambda <= C::largest_lambda; ++attempt)
+    {
+      // the normals eliminated quad by quad
+      for_each_range(parallel, F, 512, [&](std::size_t begin, std::size_t end) {
+        for(std::size_t f = begin; f < end; ++f)
+        {
+          Hinv[f] = (Hnn[f] + lambda * Eigen::Matrix3d::Identity()).inverse();
+          Sf[f] = Hvv[f] - Hnv[f].transpose() * Hinv[f] * Hnv[f];
+          bf[f] = gv[f] - Hnv[f].transpose() * (Hinv[f] * gn[f]);
+        }
+      });
+      double* values = A.valuePtr();
+      std::fill(values, values + A.nonZeros(), 0.0);
+      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(N3, 1);
+      for(std::size_t f = 0; f < F; ++f)
+      {
+        const std::size_t* s = &quad_slots[f * 144];
+        for(int a = 0; a < 12; ++a)
+          for(int b = 0; b < 12; ++b)
+            values[s[a * 12 + b]] += Sf[f](a, b);
+        for(int a = 0; a < 4; ++a)
+          for(int c = 0; c < 3; ++c)
+            rhs(Eigen::Index(3 * quads[f][std::size_t(a)] + std::size_t(c)), 0) -= bf[f](3 * a + c);
+      }
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const Eigen::Vector3d m = M.row(Eigen::Index(i)).transpose();
+        const Eigen::Vector3d d = (Y.row(Eigen::Index(i)) - S.row(Eigen::Index(i))).transpose();
+        const Eigen::Matrix3d h =
+          cw[i] * (m * m.transpose() + C::tangential_weight * Eigen::Matrix3d::Identity()) + lambda * Eigen::Matrix3d::Identity();
+        const Eigen::Vector3d g = cw[i] * (m * m.dot(d) + C::tangential_weight * d) +
+                                  fair_gradient.row(Eigen::Index(i)).transpose();
+        for(int c = 0; c < 3; ++c)
+        {
+          rhs(Eigen::Index(3 * i + std::size_t(c)), 0) -= g(c);
+          for(int e = 0; e < 3; ++e)
+            values[vertex_slots[i * 9 + std::size_t(3 * c + e)]] += h(c, e);
+        }
+      }
+      for(std::size_t k = 0; k < fairness_slots.size(); ++k)
+        values[fairness_slots[k]] += fairness_values[k];
+
+      Eigen::MatrixXd dv;
+      if(!analyzed)
+        analyzed = factorization.analyze(A);
+      if(!analyzed || !factorization.factorize(A) || !factorization.solve(rhs, dv) || !dv.allFinite())
+      {
+        ++report.rejected;
+        lambda *= 4;
+        continue;
+      }
+      Eigen::MatrixXd Yn = Y, Nn = Nf;
+      for(std::size_t i = 0; i < n; ++i)
+        for(int c = 0; c < 3; ++c)
+          Yn(Eigen::Index(i), c) += dv(Eigen::Index(3 * i + std::size_t(c)), 0);
+      for(std::size_t f = 0; f < F; ++f)
+      {
+        Vector12 dq;
+        for(int a = 0; a < 4; ++a)
+          dq.segment<3>(3 * a) = dv.block<3, 1>(Eigen::Index(3 * quads[f][std::size_t(a)]), 0);
+        Nn.row(Eigen::Index(f)) -= (Hinv[f] * (gn[f] + Hnv[f] * dq)).transpose();
+      }
+      Eigen::MatrixXd Sn;
+      std::vector<double> dn;
+      closest_at(Yn, Sn, dn);
+      const double e_new = energy(Yn, Nn, Sn, M);
+      if(std::isfinite(e_new) && e_new < e_current)
+      {
+        Y.swap(Yn);
+        Nf.swap(Nn);
+        S.swap(Sn);
+        distance.swap(dn);
+        lambda = (std::max)(1e-7, lambda / 2);
+        kept = true;
+        break;
+      }
+      ++report.rejected;
+      lambda *= 4;
+    }
+    if(!kept)
+      break;
+    ++report.steps;
+    planarity_of_quads(Y, quads, planarity, mx, mean);
+    within = mx <= threshold && largest(distance) <= scaled_bound;
+    // the weights of the quads and vertices still beyond their bounds
+    for(std::size_t f = 0; f < F; ++f)
+      if(planarity[f] > C::reweighting_fraction * threshold && w[f] < C::largest_weight)
+        w[f] *= 2;
+    for(std::size_t i = 0; i < n; ++i)
+      if(distance[i] > C::reweighting_fraction * scaled_bound && cw[i] < C::largest_weight)
+        cw[i] *= 2;
+    e_current = energy(Y, Nf, S, M);
+  }
+  X = Y * edge;
+  report.succeeded = within;
+  report.max_planarity = mx;
+  report.mean_planarity = mean;
+  double sum = 0;
+  for(double d : distance)
+    sum += d;
+  report.max_distance = largest(distance) * edge;
+  report.mean_distance = distance.empty() ? 0 : sum / double(distance.size()) * edge;
+  report.time = start.elapsed();
+}
+
+} // namespace internal
+} // namespace Polyvector_fields
+} // namespace CGAL
+
+#endif // CGAL_POLYVECTOR_FIELDS_INTERNAL_PLANARIZATION_GAUSS_NEWTON_PLANARIZATION_H

@@ -93,12 +93,13 @@ inline void planarity_of_quads(const Eigen::MatrixXd& Y, const std::vector<std::
 }
 
 // `closest(X, S, distance)` gives, for the rows of X (mesh units), the
-// closest points S and their distances.
+// closest points S and their distances. DtD: D^T D for the second differences
+// D of the fairness term.
 // X0: the input positions; edge: the mean quad edge; bound: the distance
 // bound (mesh units). On success X holds the result (mesh units).
 template <typename SolverTraits, typename Closest>
 void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std::array<std::size_t, 4> >& quads,
-                                const std::vector<std::array<std::size_t, 3> >& rows, double edge, double threshold,
+                                const Eigen::SparseMatrix<double>& DtD, double edge, double threshold,
                                 double bound, std::size_t max_steps, bool parallel, const SolverTraits& solver,
                                 Closest& closest, Eigen::MatrixXd& X, Gauss_newton_report& report)
 {
@@ -156,20 +157,6 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       d /= edge;
   };
   closest_at(Y, S, distance);
-
-  // the fairness operator D and D^T D
-  Eigen::SparseMatrix<double> D(Eigen::Index(rows.size()), Eigen::Index(n));
-  {
-    std::vector<Eigen::Triplet<double> > T;
-    for(std::size_t r = 0; r < rows.size(); ++r)
-    {
-      T.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][0]), 1.0);
-      T.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][1]), -2.0);
-      T.emplace_back(Eigen::Index(r), Eigen::Index(rows[r][2]), 1.0);
-    }
-    D.setFromTriplets(T.begin(), T.end());
-  }
-  const Eigen::SparseMatrix<double> DtD = (D.transpose() * D).pruned();
 
   // the pattern of the vertex system, and the slot of every entry a quad adds
   Eigen::SparseMatrix<double> A(N3, N3);
@@ -245,7 +232,8 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       const double c = Mc.row(Eigen::Index(i)).dot(d);
       e += cw[i] * (c * c + C::tangential_weight * d.squaredNorm());
     }
-    e += C::fairness_weight * (D * (Yc - Y0)).squaredNorm();
+    const Eigen::MatrixXd change = Yc - Y0;  // |D change|^2 = trace(change^T D^T D change)
+    e += C::fairness_weight * (change.array() * (DtD * change).array()).sum();
     return e;
   };
 

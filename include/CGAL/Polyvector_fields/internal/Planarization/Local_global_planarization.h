@@ -212,29 +212,13 @@ public:
 
   // For the Gauss-Newton method: the closest points S of the rows of Y and
   // their distances, each query hinted by the previous answer of this method
-  // for the same row (the first ones by the tree's own search). The queries
-  // are shared among the cores with `parallel`.
+  // for the same row (the first ones by the tree's own search).
   void hinted_by_own(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, std::vector<double>& distance, bool parallel)
   {
-    const std::size_t n = std::size_t(Y.rows());
-    const bool hinted = std::size_t(m_own_hints.rows()) == n;
+    const bool hinted = m_own_hints.rows() == Y.rows();
     if(!hinted)
       m_own_hints.resize(Y.rows(), 3);
-    distance.resize(n);
-    for_each_range(parallel, n, 1024, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const Eigen::Index r = Eigen::Index(i);
-        const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
-        const typename K::Point_3 s =
-          hinted ? m_tree.closest_point(q, typename K::Point_3(m_own_hints(r, 0), m_own_hints(r, 1), m_own_hints(r, 2)))
-                 : m_tree.closest_point(q);
-        m_own_hints(r, 0) = CGAL::to_double(s.x());
-        m_own_hints(r, 1) = CGAL::to_double(s.y());
-        m_own_hints(r, 2) = CGAL::to_double(s.z());
-        distance[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
-      }
-    });
+    query(Y, hinted, m_own_hints, distance, parallel);
     S = m_own_hints;
   }
 
@@ -244,24 +228,9 @@ public:
   // the cores share them; the distances are summed in order afterwards.
   void operator()(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, double& mx, double& mean, bool parallel)
   {
-    const std::size_t n = std::size_t(Y.rows());
     if(!m_have_hint)
       S.resize(Y.rows(), 3);
-    m_distance.resize(n);
-    for_each_range(parallel, n, 1024, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const Eigen::Index r = Eigen::Index(i);
-        const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
-        const typename K::Point_3 s = m_have_hint
-                                        ? m_tree.closest_point(q, typename K::Point_3(S(r, 0), S(r, 1), S(r, 2)))
-                                        : m_tree.closest_point(q);
-        S(r, 0) = CGAL::to_double(s.x());
-        S(r, 1) = CGAL::to_double(s.y());
-        S(r, 2) = CGAL::to_double(s.z());
-        m_distance[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
-      }
-    });
+    query(Y, m_have_hint, S, m_distance, parallel);
     mx = 0;
     double sum = 0;
     for(double d : m_distance)
@@ -269,11 +238,32 @@ public:
       mx = (std::max)(mx, d);
       sum += d;
     }
-    mean = sum / double(n);
+    mean = sum / double(Y.rows());
     m_have_hint = true;
   }
 
 private:
+  // The closest points of the rows of Y into S, hinted by the rows of S
+  // when `hinted`, and their distances.
+  void query(const Eigen::MatrixXd& Y, bool hinted, Eigen::MatrixXd& S, std::vector<double>& distance, bool parallel) const
+  {
+    const std::size_t n = std::size_t(Y.rows());
+    distance.resize(n);
+    for_each_range(parallel, n, 1024, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const Eigen::Index r = Eigen::Index(i);
+        const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
+        const typename K::Point_3 s = hinted ? m_tree.closest_point(q, typename K::Point_3(S(r, 0), S(r, 1), S(r, 2)))
+                                             : m_tree.closest_point(q);
+        S(r, 0) = CGAL::to_double(s.x());
+        S(r, 1) = CGAL::to_double(s.y());
+        S(r, 2) = CGAL::to_double(s.z());
+        distance[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
+      }
+    });
+  }
+
   Tree m_tree;
   bool m_have_hint = false;
   std::vector<double> m_distance;
@@ -445,7 +435,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
       closest.hinted_by_own(Y, S_, d_, p.parallel);
     };
     Gauss_newton_report g;
-    gauss_newton_planarization(X0, mesh.quads, rows, result.mean_edge_length, p.threshold, result.distance_bound,
+    gauss_newton_planarization(X0, mesh.quads, DtD, result.mean_edge_length, p.threshold, result.distance_bound,
                                p.gauss_newton_steps, p.parallel, solver, closest_points_of, Xg, g);
     result.gauss_newton_ran = true;
     result.gauss_newton_steps = g.steps;

@@ -98,8 +98,8 @@ struct Planarization_result
 /// short of the threshold or too far from the surface, a Gauss-Newton
 /// (Levenberg-Marquardt) minimization starts again from the input, over the vertices and a
 /// unit normal `n_f` per quad, of
-/// `sum_f w_f sum_{edges ab of f} (n_f . (x_b - x_a))^2 + sum_f (|n_f|^2 - 1)^2
-/// + sum_i c_i ((m_i . (x_i - s_i))^2 + t |x_i - s_i|^2) + g |D (X - X_0)|^2`, in units of the
+/// `sum_f w_f sum_{edges ab of f} (n_f . (x_b - x_a))^2 + sum_f (|n_f|^2 - 1)^2`
+/// `+ sum_i c_i ((m_i . (x_i - s_i))^2 + t |x_i - s_i|^2) + g |D (X - X_0)|^2`, in units of the
 /// mean quad edge, `s_i` the closest point of the reference and `m_i` the unit normal of the
 /// input quad mesh at vertex `i` (the sum of the cross products of the diagonals of its
 /// quads), so that vertices may slide along the surface (`t` = `g` = 1e-3). A step is

@@ -61,7 +61,6 @@ struct Gauss_newton_constants
 // What the method did; positions and measures of its last kept iterate.
 struct Gauss_newton_report
 {
-  bool ran = false;
   bool succeeded = false;
   std::size_t steps = 0;         // kept steps
   std::size_t rejected = 0;      // rejected attempts
@@ -109,7 +108,6 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
   typedef Eigen::Matrix<double, 3, 12> Matrix3x12;
   const Timer start;
   report = Gauss_newton_report();
-  report.ran = true;
   const std::size_t n = std::size_t(X0.rows()), F = quads.size();
   const Eigen::Index N3 = Eigen::Index(3 * n);
   const int edge_ends[4][2] = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };

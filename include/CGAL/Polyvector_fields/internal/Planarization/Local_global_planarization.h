@@ -148,18 +148,8 @@ struct Quad_mesh_arrays
   // The largest and the mean planarity of the quads at positions Y.
   void planarity(const Eigen::MatrixXd& Y, double& mx, double& mean) const
   {
-    mx = 0;
-    double sum = 0;
-    for(const auto& q : quads)
-    {
-      std::array<std::array<double, 3>, 4> p;
-      for(int k = 0; k < 4; ++k)
-        p[k] = { Y(Eigen::Index(q[k]), 0), Y(Eigen::Index(q[k]), 1), Y(Eigen::Index(q[k]), 2) };
-      const double v = quad_planarity(p[0], p[1], p[2], p[3]);
-      mx = (std::max)(mx, v);
-      sum += v;
-    }
-    mean = sum / double(quads.size());
+    std::vector<double> each;
+    planarity_of_quads(Y, quads, each, mx, mean);
   }
 
   // The second differences x_a - 2 x_i + x_b of the fairness term: the two

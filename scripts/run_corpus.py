@@ -34,8 +34,12 @@ refused, 1 otherwise.
 
 Defaults: the executables of build/ in this repository, --out output/corpus,
 the checker's bars --min-area-ratio 0.98 and --max-hausdorff 0.01. With
---planarize among the options, quad vertices may lie 5% of the mean quad edge
-off the surface (otherwise 1e-6 of the bounding-box diagonal). --sharp-edges D
+--planarize among the options, when the program says it planarized the quads
+to a threshold T, the checker holds every quad to T (--max-planarity) and lets
+the vertices lie --max-surface-distance (default 0.05) mean quad edges off
+the surface; when the program wrote the quads as extracted, they are checked
+as without --planarize (vertices within 1e-6 of the bounding-box diagonal),
+and the table gives their planarity. --sharp-edges D
 is given to both the pipeline and the checker, which then measures the part of
 the input's edges sharper than D degrees that lies on quad edges: within 1% of
 the mean quad edge, and "traced" (within 1%, or between the ends of a quad edge
@@ -254,7 +258,13 @@ def run_one(mesh, name, arguments, cli_options):
         if sharp is not None:
             checker += ["--sharp-edges", sharp]
         if "--planarize" in cli_options:
-            checker += ["--distance-tolerance-edge", "0.05"]
+            planarized = planarization_outcome(stdout)
+            result["planarization"] = planarized
+            if planarized is not None:
+                # the program says the quads are planar to T within its distance bound: both are checked
+                surface_distance = option_value(cli_options, "--max-surface-distance")
+                checker += ["--max-planarity", repr(planarized),
+                            "--distance-tolerance-edge", surface_distance if surface_distance else "0.05"]
         check_code, check_out, check_err, _ = run_process(checker, arguments.timeout)
         with open(stem + ".check.txt", "w") as report:
             report.write("$ " + " ".join(shlex.quote(c) for c in checker) + "\n" + check_out + check_err)
@@ -267,6 +277,16 @@ def run_one(mesh, name, arguments, cli_options):
             result.update(status="unchecked",
                           reason="check_quad_mesh exit %s: %s" % (check_code, last_line(check_err or check_out)))
     return result
+
+
+def planarization_outcome(stdout):
+    """The threshold the program says every quad is planar to, or None when it wrote the quads as extracted."""
+    for line in stdout.splitlines():
+        if line.startswith("planarity ") and " -> after " in line:
+            match = re.search(r"\(threshold ([0-9.eE+-]+)%\)", line)
+            if match:
+                return float(match.group(1)) / 100
+    return None
 
 
 def invalid_reason(check_out, summary, arguments):
@@ -297,6 +317,8 @@ def invalid_reason(check_out, summary, arguments):
             parts.append("area ratio %s < %g" % (s.get("area_ratio", "?"), arguments.min_area_ratio))
         elif name == "hausdorff":
             parts.append("Hausdorff %s > %g" % (s.get("hausdorff", "?"), arguments.max_hausdorff))
+        elif name == "planar":
+            parts.append("a quad of planarity %s beyond the program's threshold" % s.get("max_planarity", "?"))
         else:
             parts.append(lines.get(name, name))
     return "; ".join(parts)
@@ -307,10 +329,10 @@ def cell(text, limit=160):
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
-def print_table(results):
+def print_table(results, planarize):
     print("| mesh | faces | status | reason | seconds | quads | irregular vertices | area ratio | "
-          "Hausdorff/diag | sharp-edge coverage, traced (and boundary) |")
-    print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|")
+          "Hausdorff/diag | sharp-edge coverage, traced (and boundary) |" + (" planarity max |" if planarize else ""))
+    print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|" + ("---|" if planarize else ""))
     for r in results:
         c = r["check"]
         irregular = ""
@@ -331,11 +353,17 @@ def print_table(results):
                 100 * float(c.get("boundary_coverage", "nan")), c["boundary_edges"])
             if "boundary_traced" in c:
                 coverage += ", traced %.1f%%" % (100 * float(c["boundary_traced"]))
-        print("| %s | %s | %s | %s | %.1f | %s | %s | %s | %s | %s |" % (
+        planarity = ""
+        if planarize and "max_planarity" in c:
+            planarity = "%.3g%% " % (100 * float(c["max_planarity"]))
+            planarity += ("(planarized to %g%%)" % (100 * r["planarization"]) if r.get("planarization") is not None
+                          else "(as extracted)")
+        print("| %s | %s | %s | %s | %.1f | %s | %s | %s | %s | %s |%s" % (
             cell(os.path.basename(r["mesh"])), "" if r["faces"] is None else r["faces"],
             "**%s**" % r["status"] if r["status"] not in ("ok", "refused") else r["status"],
             cell(r["reason"]), r["seconds"], c.get("quads", ""), irregular,
-            c.get("area_ratio", ""), c.get("hausdorff", ""), coverage))
+            c.get("area_ratio", ""), c.get("hausdorff", ""), coverage,
+            " %s |" % planarity if planarize else ""))
 
 
 def main():
@@ -365,7 +393,7 @@ def main():
 
     print("options: `%s`" % " ".join(shlex.quote(o) for o in cli_options))
     print()
-    print_table(results)
+    print_table(results, "--planarize" in cli_options)
     counts = {status: sum(1 for r in results if r["status"] == status) for status in STATUSES}
     print()
     print("total: %d meshes: " % len(results) +

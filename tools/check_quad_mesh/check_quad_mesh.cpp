@@ -10,7 +10,7 @@
 //
 //   check_quad_mesh INPUT QUADS [--sharp-edges DEGREES] [--distance-tolerance T]
 //                   [--distance-tolerance-edge F] [--min-area-ratio R]
-//                   [--max-hausdorff H]
+//                   [--max-hausdorff H] [--max-planarity P]
 //
 // It uses CGAL only (Surface_mesh, Polygon_mesh_processing, AABB_tree, IO),
 // never the package's headers, so that it checks the pipeline with code that
@@ -87,6 +87,7 @@ typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Segment_primitive>> Segment_tree;
 const char* const usage_text =
     "usage: check_quad_mesh INPUT QUADS [--sharp-edges DEGREES] [--distance-tolerance T]\n"
     "                       [--distance-tolerance-edge F] [--min-area-ratio R] [--max-hausdorff H]\n"
+    "                       [--max-planarity P]\n"
     "       check_quad_mesh INPUT --input-only\n"
     "  INPUT, QUADS              meshes (.off, .obj, .ply, .stl); QUADS is checked against INPUT\n"
     "  --sharp-edges DEGREES     also measure how well the quad edges follow the interior input\n"
@@ -97,6 +98,8 @@ const char* const usage_text =
     "  --min-area-ratio R        fail when quad area / input area < R (default 0: reported only)\n"
     "  --max-hausdorff H         fail when an input vertex or face centroid lies farther than H bbox\n"
     "                            diagonals from the quads (default 0.01)\n"
+    "  --max-planarity P         fail when a quad's diagonals are farther apart than P times their\n"
+    "                            mean length (default: the planarity is reported only)\n"
     "  --input-only              only read INPUT as the checks do: exit 0 when it makes a surface\n"
     "exit status: 0 valid, 1 invalid, 2 unreadable input or bad command line\n";
 
@@ -108,6 +111,7 @@ struct Options {
   double distance_tolerance_edge = -1;  // in mean quad edge lengths; < 0: unused
   double min_area_ratio = 0;
   double max_hausdorff = 0.01;
+  double max_planarity = -1;            // < 0: the planarity is reported, not checked
   bool input_only = false;
 };
 
@@ -157,6 +161,8 @@ Options parse_options(int argc, char** argv)
         options.min_area_ratio = parse_number(arg, value, 0, 100);
       else if(arg == "--max-hausdorff")
         options.max_hausdorff = parse_number(arg, value, 0, 100);
+      else if(arg == "--max-planarity")
+        options.max_planarity = parse_number(arg, value, 0, 100);
       else
         usage_error("unknown option " + arg);
     } else {
@@ -778,6 +784,50 @@ int main(int argc, char** argv)
                                       : format(options.distance_tolerance) + " bbox diagonal");
     report.line("on_surface", value.str(), beyond == 0 && non_finite == 0, why.str());
     report.add("max_distance", max_distance / ref.diagonal);
+  }
+
+  // --- planarity of the quads ---------------------------------------------------
+  // The distance between the two diagonals (as lines) over their mean length;
+  // for diagonals that are parallel, the distance of a vertex of one to the
+  // line of the other. Reported always; a check with --max-planarity.
+  {
+    double max_planarity = 0, sum = 0;
+    std::size_t counted = 0, beyond = 0;
+    for(const Polygon& q : polygons) {
+      if(q.size() != 4)
+        continue;
+      const Point &a = points[q[0]], &b = points[q[1]], &c = points[q[2]], &d = points[q[3]];
+      if(!is_finite(a) || !is_finite(b) || !is_finite(c) || !is_finite(d))
+        continue;
+      const Vector d1 = c - a, d2 = d - b;
+      const double l1 = std::sqrt(d1.squared_length()), l2 = std::sqrt(d2.squared_length());
+      const double mean_diagonal = 0.5 * (l1 + l2);
+      if(!(mean_diagonal > 0))
+        continue;
+      const Vector normal = CGAL::cross_product(d1, d2);
+      const double normal_length = std::sqrt(normal.squared_length());
+      double gap = 0;
+      if(normal_length > 1e-12 * l1 * l2)
+        gap = std::abs((b - a) * normal) / normal_length;
+      else if(l1 > 0)
+        gap = std::sqrt(CGAL::cross_product(b - a, d1).squared_length()) / l1;
+      const double planarity = gap / mean_diagonal;
+      max_planarity = std::max(max_planarity, planarity);
+      sum += planarity;
+      ++counted;
+      if(options.max_planarity >= 0 && !(planarity <= options.max_planarity * (1 + 1e-9)))
+        ++beyond;
+    }
+    std::ostringstream value;
+    value << "max " << format(max_planarity) << ", mean " << format(counted > 0 ? sum / double(counted) : 0)
+          << " (diagonal distance over mean diagonal, " << counted << " quads)";
+    if(options.max_planarity >= 0) {
+      value << ", " << beyond << " beyond " << format(options.max_planarity);
+      report.line("planar", value.str(), beyond == 0, "bound " + format(options.max_planarity));
+    } else {
+      report.info("planarity", value.str());
+    }
+    report.add("max_planarity", max_planarity);
   }
 
   // --- folds --------------------------------------------------------------------

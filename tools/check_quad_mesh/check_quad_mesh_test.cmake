@@ -141,6 +141,22 @@ check(edge_relative_tolerance cube.off cube_quads_moved.off "--distance-toleranc
       "on_surface: [^\n]* 0 vertices beyond [^\n]*\\(ok"
       "summary valid=0 failed=hausdorff ")
 
+# Planarity: the 2x2 grid with its centre vertex lifted by 0.1. Each quad's
+# diagonals, (1,1,0.1) and (-1,1,0) from a corner one edge apart, are
+# 0.1 / |(-0.1,-0.1,2)| = 0.049875 apart, over a mean diagonal length of
+# (sqrt(2.01) + sqrt(2)) / 2 = 1.415979: planarity 0.035223 for all four.
+file(WRITE "${WORK_DIR}/grid_lifted.off"
+     "OFF\n9 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0.1\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n${grid_quads}")
+check(planarity_reported square.off grid.off "" 0
+      "planarity: max 0, mean 0 \\(diagonal distance over mean diagonal, 4 quads\\)")
+check(planar_within_bound square.off grid_lifted.off
+      "--distance-tolerance-edge 1 --max-hausdorff 0.1 --max-planarity 0.0353" 0
+      "planar: max 0.03522[0-9]*, mean 0.03522[0-9]* \\(diagonal distance over mean diagonal, 4 quads\\), 0 beyond 0.0353 \\(ok")
+check(not_planar_enough square.off grid_lifted.off
+      "--distance-tolerance-edge 1 --max-hausdorff 0.1 --max-planarity 0.0352" 1
+      "planar: [^\n]*, 4 beyond 0.0352 \\(FAIL: bound 0.0352"
+      "summary valid=0 failed=planar ")
+
 # A tent whose crease bends: (0,0,1) (1,0.05,1) (2,0,1), with planar sides
 # going down to z = 0 one unit away. Two quads whose middle edge is the chord
 # (0,0,1)-(2,0,1) of the crease: the samples of the crease are 0.05 x (x <= 1)

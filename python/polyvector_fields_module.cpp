@@ -1336,13 +1336,20 @@ py::tuple quad_planarity(py::handle Vq, py::handle Fq)
 }
 
 py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py::handle threshold_arg,
-                    py::handle max_distance_to_surface, py::handle number_of_iterations)
+                    py::handle max_distance_to_surface, py::handle number_of_iterations,
+                    py::handle gauss_newton_steps_arg)
 {
   const double threshold = read_real_number(threshold_arg, "threshold");
   const Mesh_arrays q = read_mesh_arrays(Vq, Fq, 4, "Vq", "Fq");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const std::optional<double> distance = read_number(max_distance_to_surface, "max_distance_to_surface");
-  const std::size_t iterations = read_count(number_of_iterations, "number_of_iterations");
+  // the function's own defaults where None is given
+  const PVF::internal::Planarization_parameters defaults;
+  const std::size_t given_iterations = read_count(number_of_iterations, "number_of_iterations");
+  const std::size_t iterations = given_iterations > 0 ? given_iterations : defaults.max_iterations;
+  const std::size_t gauss_newton_steps =
+    gauss_newton_steps_arg.is_none() ? defaults.gauss_newton_steps
+                                     : std::size_t(read_whole(gauss_newton_steps_arg, "gauss_newton_steps", 0, 1000000));
   std::vector<double> out;
   PVF::Planarization_result r;
   PVF::Error_code code;
@@ -1352,18 +1359,18 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
     build_mesh(q, qm, "Fq");
     build_mesh(a, tm);
     namespace P = PVF::parameters;
-    const auto np = P::planarity_threshold(threshold);
-    if(distance && iterations)
-      code = PVF::planarize_quad_mesh(qm, tm, r, P::max_distance_to_surface(*distance, np).number_of_iterations(iterations));
-    else if(distance)
+    const auto np =
+      P::gauss_newton_steps(gauss_newton_steps, P::planarity_threshold(threshold).number_of_iterations(iterations));
+    // without a distance, the function's default bound (5% of the mean quad edge)
+    if(distance)
       code = PVF::planarize_quad_mesh(qm, tm, r, P::max_distance_to_surface(*distance, np));
-    else if(iterations)
-      code = PVF::planarize_quad_mesh(qm, tm, r, np.number_of_iterations(iterations));
     else
       code = PVF::planarize_quad_mesh(qm, tm, r, np);
-    // Not reaching the threshold, or only by leaving the surface, is reported, not raised:
-    // the quad mesh is then returned as it was given (the command-line program does the same).
-    if(code != PVF::Error_code::DID_NOT_CONVERGE && code != PVF::Error_code::TOO_FAR_FROM_SURFACE)
+    // Not reaching the threshold, or only by leaving the surface or folding a quad, is
+    // reported, not raised: the quad mesh is then returned as it was given (the
+    // command-line program does the same).
+    if(code != PVF::Error_code::DID_NOT_CONVERGE && code != PVF::Error_code::TOO_FAR_FROM_SURFACE &&
+       code != PVF::Error_code::FOLDED_QUAD)
       check(code, "planarize", "threshold " + std::to_string(threshold));
     if(code == PVF::Error_code::SUCCESS)
       for(Vertex v : vertices(qm))
@@ -1378,8 +1385,12 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
   info["status"] = code_name(code);
   info["converged"] = r.converged;
   info["left_surface"] = r.left_surface;
+  info["folded_quads"] = r.folded_quads;
   info["gauss_newton_ran"] = r.gauss_newton_ran;
   info["gauss_newton_steps"] = r.gauss_newton_steps;
+  info["gauss_newton_rejected_steps"] = r.gauss_newton_rejected_steps;
+  info["gauss_newton_max_planarity"] = r.gauss_newton_max_planarity;
+  info["gauss_newton_max_distance"] = r.gauss_newton_max_distance;
   info["iterations"] = r.iterations;
   info["threshold"] = r.threshold;
   info["max_planarity_before"] = r.max_planarity_before;
@@ -1579,5 +1590,6 @@ PYBIND11_MODULE(_core, m)
         "keep_trimmed_boundary"_a = false);
   m.def("quad_planarity", &quad_planarity, "Vq"_a, "Fq"_a);
   m.def("planarize", &planarize, "Vq"_a, "Fq"_a, "V"_a, "F"_a, "threshold"_a = 0.01,
-        "max_distance_to_surface"_a = py::none(), "number_of_iterations"_a = py::none());
+        "max_distance_to_surface"_a = py::none(), "number_of_iterations"_a = py::none(),
+        "gauss_newton_steps"_a = py::none());
 }

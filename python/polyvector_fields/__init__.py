@@ -340,17 +340,25 @@ def quad_planarity(Vq, Fq):
     return _core.quad_planarity(Vq, Fq)
 
 
-def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number_of_iterations=None):
+def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number_of_iterations=None,
+              gauss_newton_steps=None):
     """Moves the quad vertices until every quad is planar to ``threshold``, staying near the surface (V, F).
 
     Local-global iterations (best-fit planes, then one sparse solve with
-    closeness to the triangle mesh and fairness); when they fail, Gauss-Newton
-    steps from the input, over the vertices and a normal per quad
-    (``info["gauss_newton_ran"]``, ``info["gauss_newton_steps"]``).
+    closeness to the triangle mesh and fairness), at most
+    ``number_of_iterations`` (default 500); when they fail, at most
+    ``gauss_newton_steps`` Gauss-Newton steps (default 50, 0 for none) from
+    the input, over the vertices and a normal per quad
+    (``info["gauss_newton_ran"]``, ``info["gauss_newton_steps"]``,
+    ``info["gauss_newton_rejected_steps"]``, and where they got to:
+    ``info["gauss_newton_max_planarity"]``, ``info["gauss_newton_max_distance"]``).
     ``max_distance_to_surface``
     bounds how far a vertex may end from the surface (default 5% of the mean
-    quad edge). When the threshold is not reached (``info["status"]`` is
-    ``"DID_NOT_CONVERGE"`` or ``"TOO_FAR_FROM_SURFACE"``), the quad mesh is
+    quad edge), and no quad may be folded that was not (neither diagonal
+    splitting it into two triangles that face the side of its input normal).
+    When the threshold is not reached (``info["status"]`` is
+    ``"DID_NOT_CONVERGE"``, ``"TOO_FAR_FROM_SURFACE"``, or ``"FOLDED_QUAD"``
+    with ``info["folded_quads"]``), the quad mesh is
     returned as given, not raised: the command-line program does the same.
     ``info["left_surface"]`` is true when the iterations stopped early because
     a vertex was beyond that bound once the pull towards the surface had
@@ -358,7 +366,7 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
 
     Returns ``Vq2`` (the moved vertices; ``Fq`` is unchanged) and ``info``.
     """
-    return _core.planarize(Vq, Fq, V, F, threshold, max_distance_to_surface, number_of_iterations)
+    return _core.planarize(Vq, Fq, V, F, threshold, max_distance_to_surface, number_of_iterations, gauss_newton_steps)
 
 
 def _area_and_mean_edge(V, F):
@@ -386,7 +394,7 @@ def _merge_constraints(rows, width):
 
 def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_alignment=True, conjugate=False,
                 planarize=False, b=None, bc=None, curvature_constraints=None, singularity_separation=1.0,
-                max_surface_distance=0.05, keep_trimmed_boundary=False):
+                max_surface_distance=0.05, keep_trimmed_boundary=False, gauss_newton_steps=None):
     """Remeshes a triangle mesh into quads: the whole road, from the surface to a (planar-)quad mesh.
 
     The stages are those of the command-line program ``design_polyvector_field
@@ -415,7 +423,8 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
        and cannot be combined with ``planarize``);
     7. with ``planarize`` (True for the paper's 1%, or a threshold),
        :func:`planarize`, each vertex kept within ``max_surface_distance``
-       mean quad edges of the surface; then the planarity. A planarization
+       mean quad edges of the surface (``gauss_newton_steps`` passed on);
+       then the planarity. A planarization
        that does not reach the threshold leaves the quads as extracted
        (``info["planarization"]["status"]`` says why), as in the program.
 
@@ -509,7 +518,8 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
         edges = np.unique(np.sort(np.concatenate([Fq[:, [k, (k + 1) % 4]] for k in range(4)]), axis=1), axis=0)
         mean_quad_edge = np.linalg.norm(Vq[edges[:, 0]] - Vq[edges[:, 1]], axis=1).mean()
         Vq, planarization_info = globals()["planarize"](Vq, Fq, V2, F2, threshold=threshold,
-                                                        max_distance_to_surface=max_surface_distance * mean_quad_edge)
+                                                        max_distance_to_surface=max_surface_distance * mean_quad_edge,
+                                                        gauss_newton_steps=gauss_newton_steps)
     # the planarity of the quads (with keep_trimmed_boundary, of the faces with 4 corners)
     quad_rows = Fq[(Fq[:, :4] >= 0).all(axis=1) & ((Fq[:, 4:] < 0).all(axis=1))][:, :4]
     _, planarity = quad_planarity(Vq, quad_rows)

@@ -119,6 +119,10 @@ CASES = [
     ("BAD_ARRAY", "Fq: expected shape (n, 4), got (2, 3)", pvf.quad_planarity, (V, F), {}),
     ("BAD_ARRAY", "Fq[0, 3] = 9 is not a vertex of Vq", pvf.planarize, (V, np.array([[0, 1, 3, 9]]), V, F), {}),
     ("INVALID_PARAMETER", "planarize", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F), {"threshold": -1.0}),
+    ("INVALID_PARAMETER", "gauss_newton_steps: -1 is not in 0..1000000", pvf.planarize,
+     (V, np.array([[0, 1, 3, 2]]), V, F), {"gauss_newton_steps": -1}),
+    ("INVALID_PARAMETER", "gauss_newton_steps: expected an integer, got 2.5", pvf.planarize,
+     (V, np.array([[0, 1, 3, 2]]), V, F), {"gauss_newton_steps": 2.5}),
     # files
     ("CANNOT_OPEN_FILE", "mesh '/nonexistent/m.off'", pvf.read_triangle_mesh, ("/nonexistent/m.off",), {}),
     ("BAD_ARRAY", "save_mesh: '", pvf.save_mesh, ("x.ply", V, F), {}),

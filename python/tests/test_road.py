@@ -62,10 +62,38 @@ def test_the_stages_of_the_road_one_by_one():
     P, planarity = pvf.quad_planarity(Vq, Fq)
     Vp, pinfo = pvf.planarize(Vq, Fq, V, F, threshold=0.05)
     _, after = pvf.quad_planarity(Vp, Fq)
-    assert pinfo["status"] in ("SUCCESS", "DID_NOT_CONVERGE", "TOO_FAR_FROM_SURFACE")
+    assert pinfo["status"] in ("SUCCESS", "DID_NOT_CONVERGE", "TOO_FAR_FROM_SURFACE", "FOLDED_QUAD")
     if pinfo["status"] == "SUCCESS":
         assert after["max"] <= 0.05
     else:
         assert np.array_equal(Vp, Vq)  # not reached: the quads come back as given
     assert abs(after["max"] - pinfo["max_planarity_after"]) <= 1e-12 or pinfo["status"] != "SUCCESS"
     assert abs(planarity["max"] - pinfo["max_planarity_before"]) <= 1e-12
+
+
+def test_planarize_gauss_newton_steps_bound_the_second_method():
+    # One local-global iteration cannot take these quads to 1%, so the second
+    # method decides: with gauss_newton_steps=0 it does not run and the quads
+    # come back as given; with 3 it runs, and keeps at most 3 steps.
+    V, F, _ = pvf.read_triangle_mesh(data_path("bumpy.off"))
+    X, _ = pvf.frame_field(V, F, curvature_constraints=0.02)
+    UV, FUV, minfo = pvf.integer_grid_map(V, F, X, quads=300)
+    Vq, Fq, _ = pvf.quad_mesh(V, F, UV, FUV, minfo["seam_transitions"])
+    _, before = pvf.quad_planarity(Vq, Fq)
+    assert before["max"] > 0.01  # else the local-global iteration would succeed at once
+
+    Vp, info = pvf.planarize(Vq, Fq, V, F, threshold=0.01, number_of_iterations=1, gauss_newton_steps=0)
+    assert info["status"] != "SUCCESS"
+    assert not info["gauss_newton_ran"] and info["gauss_newton_steps"] == 0
+    assert np.array_equal(Vp, Vq)
+
+    Vp, info = pvf.planarize(Vq, Fq, V, F, threshold=0.01, number_of_iterations=1, gauss_newton_steps=3)
+    assert info["gauss_newton_ran"]
+    assert 1 <= info["gauss_newton_steps"] <= 3
+    if info["status"] == "SUCCESS":
+        _, after = pvf.quad_planarity(Vp, Fq)
+        assert after["max"] <= 0.01
+    else:
+        # where the 3 steps got to is reported, and the quads come back as given
+        assert info["gauss_newton_max_planarity"] > 0.01 or info["gauss_newton_max_distance"] > info["distance_bound"]
+        assert np.array_equal(Vp, Vq)

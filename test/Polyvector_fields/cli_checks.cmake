@@ -27,7 +27,8 @@
 # - the quad mesh (.off, .obj, and its .quads.vtk) has the summary's number of
 #   vertices and of quads, every face a quad but the trimmed boundary polygons
 #   the summary counts;
-# - every file the summary says it wrote exists.
+# - every file the summary says it wrote exists;
+# - stdout says expect_stdout, and not reject_stdout, when the case sets them.
 #
 # Constraint files are written in the program's format: one constrained face
 # per line, "face_id x1 y1 z1 [x2 y2 z2 ...]", vectors in world coordinates,
@@ -154,6 +155,29 @@ elseif(CASE STREQUAL "planar_quads_inspired")
   set(expect_degree 4)
   set(expect_faces 4288)
   set(expect_stdout "-> after ")
+elseif(CASE STREQUAL "planarize_bumpy")
+  # Quads of a conjugate field on bumpy (1% curvature constraints): the
+  # local-global iterations stop with a vertex too far from the surface, and
+  # the second method (Gauss-Newton steps, on by default) reaches 1% within
+  # the bound, folding no quad.
+  set(args --mesh "${bumpy}" --curvature-constraints 1 --conjugate --quad-mesh "${WORK_DIR}/quads.off" --planarize)
+  list(APPEND outputs "${WORK_DIR}/quads.off" "${WORK_DIR}/out.quads.vtk")
+  set(expect_success TRUE)
+  set(expect_degree 4)
+  set(expect_faces ${bumpy_faces})
+  set(expect_stdout "(they left the surface) and ")
+elseif(CASE STREQUAL "planarize_bumpy_without_gauss_newton")
+  # The same run with --gauss-newton-steps 0: the local-global failure is
+  # reported as it is, the quads are written as extracted, and no
+  # Gauss-Newton step is taken.
+  set(args --mesh "${bumpy}" --curvature-constraints 1 --conjugate --quad-mesh "${WORK_DIR}/quads.off" --planarize
+           --gauss-newton-steps 0)
+  list(APPEND outputs "${WORK_DIR}/quads.off" "${WORK_DIR}/out.quads.vtk")
+  set(expect_success TRUE)
+  set(expect_degree 4)
+  set(expect_faces ${bumpy_faces})
+  set(expect_stdout "with the pull towards the surface at its floor: the quad mesh is written as extracted")
+  set(reject_stdout "Gauss-Newton")
 elseif(CASE STREQUAL "default_run")
   # The README's main command: no arguments, the bundled run, writing into
   # output/ of the working directory.
@@ -464,6 +488,12 @@ if(expect_success)
     string(FIND "${out}" "${expect_stdout}" at)
     if(at EQUAL -1)
       message(FATAL_ERROR "stdout does not say '${expect_stdout}'\nstdout:\n${out}")
+    endif()
+  endif()
+  if(DEFINED reject_stdout)
+    string(FIND "${out}" "${reject_stdout}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "stdout says '${reject_stdout}', which it should not\nstdout:\n${out}")
     endif()
   endif()
   if(CASE STREQUAL "default_run")

@@ -103,6 +103,9 @@ const char* usage =
   "  --max-surface-distance F with --planarize: a vertex may move at most F mean quad edges away\n"
   "                           from the surface (default 0.05); a planarization that needs more is\n"
   "                           reported and the quad mesh is written as extracted\n"
+  "  --gauss-newton-steps K   with --planarize: at most K steps of the second method, which runs\n"
+  "                           when the local-global iterations fail (default 50; 0: none, the\n"
+  "                           local-global failure is reported at once)\n"
   "output (default when none of the first five is given: output/<mesh name>.rawfield, .sings and .vtk):\n"
   "  --out-field FILE         write the field (.rawfield: N F, then 3N numbers per face)\n"
   "  --out-singularities FILE write the singularities (.sings: N count, then 'vertex numerator')\n"
@@ -159,6 +162,7 @@ struct Options
   std::string out_html, out_ply;  // --out-html, --out-ply
   double planarity_threshold = 0;  // 0: no planarization
   double max_surface_distance = 0.05;  // --max-surface-distance, in mean quad edges
+  std::size_t gauss_newton_steps = 50;  // --gauss-newton-steps
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
 
   bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate || parametrize; }
@@ -240,7 +244,7 @@ private:
 Options parse_options(int argc, char** argv)
 {
   Options o;
-  bool separation_given = false, surface_distance_given = false;
+  bool separation_given = false, surface_distance_given = false, gauss_newton_given = false;
   bool degree_given = false;
   Command_line line(argc, argv);
   std::string flag;
@@ -327,6 +331,11 @@ Options parse_options(int argc, char** argv)
       o.max_surface_distance = line.number(0, 1e6, true);
       surface_distance_given = true;
     }
+    else if(flag == "--gauss-newton-steps")
+    {
+      o.gauss_newton_steps = line.integer(0, 1000000);
+      gauss_newton_given = true;
+    }
     else if(flag == "--planarize")
       o.planarity_threshold = line.optional_number(0, 1, 0.01);
     else
@@ -389,6 +398,8 @@ Options parse_options(int argc, char** argv)
     throw Failure("--singularity-separation goes with --parametrize or --quad-mesh", 2);
   if(surface_distance_given && o.planarity_threshold <= 0)
     throw Failure("--max-surface-distance goes with --planarize", 2);
+  if(gauss_newton_given && o.planarity_threshold <= 0)
+    throw Failure("--gauss-newton-steps goes with --planarize", 2);
   if(o.planarity_threshold > 0 && o.out_quads.empty())
     throw Failure("--planarize goes with --quad-mesh", 2);
   if(!o.out_ply.empty() && o.out_quads.empty())

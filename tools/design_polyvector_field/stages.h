@@ -662,12 +662,16 @@ bool make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, cons
       mean_edge += CGAL::Polygon_mesh_processing::edge_length(e, q.quads) / double(num_edges(q.quads));
     const PVF::Error_code code = PVF::planarize_quad_mesh(
       q.quads, tm, q.planarization,
-      PVF::parameters::max_distance_to_surface(o.max_surface_distance * mean_edge,
-                                               PVF::parameters::planarity_threshold(o.planarity_threshold)));
+      PVF::parameters::max_distance_to_surface(
+        o.max_surface_distance * mean_edge,
+        PVF::parameters::gauss_newton_steps(o.gauss_newton_steps,
+                                            PVF::parameters::planarity_threshold(o.planarity_threshold))));
     // Not reaching the threshold within the iterations, or only by leaving the
-    // surface, is reported, not fatal: the quad mesh is then kept as extracted.
+    // surface or folding a quad, is reported, not fatal: the quad mesh is then
+    // kept as extracted.
     q.planarization_code = code;
-    if(code != PVF::Error_code::DID_NOT_CONVERGE && code != PVF::Error_code::TOO_FAR_FROM_SURFACE)
+    if(code != PVF::Error_code::DID_NOT_CONVERGE && code != PVF::Error_code::TOO_FAR_FROM_SURFACE &&
+       code != PVF::Error_code::FOLDED_QUAD)
       check(code, "planarization");
     q.planarized = true;
     check(PVF::quad_planarity(q.quads, planarity, q.after), "planarity");

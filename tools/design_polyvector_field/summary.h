@@ -276,6 +276,9 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length
                   << "% of the mean quad edge) from the surface, beyond the bound " << r.distance_bound << " ("
                   << 100 * o.max_surface_distance << "%): the quad mesh is written as extracted";
+      else if(q.planarization_code == PVF::Error_code::FOLDED_QUAD)
+        std::cout << "; the planarization reached " << 100 * r.max_planarity_after << "% only by folding "
+                  << r.folded_quads << " quad(s): the quad mesh is written as extracted";
       else if(r.converged)
         std::cout << " -> after " << r.iterations << " iterations max " << 100 * q.after.max << "%, mean "
                   << 100 * q.after.mean << "% (threshold " << 100 * r.threshold << "%); largest distance to the surface "

@@ -52,7 +52,7 @@ enum class Error_code
   MAP_CHECK_FAILED,              ///< a computed integer-grid map failed the check made before it is returned: a seam not exact under its transition, a singular vertex off the integer grid, or transitions that do not compose to the identity around a regular vertex
   NO_INTEGER_CELL,               ///< a connected component of the surface has no whole cell of the integer-grid map: the quad size is larger than that part of the surface
   TOO_FAR_FROM_SURFACE,          ///< a moved vertex ended farther from the reference surface than the allowed distance (`planarize_quad_mesh()`'s `max_distance_to_surface`)
-  FOLDED_QUAD,                   ///< a quad extracted from an integer-grid map is folded against the surface: neither of its diagonals splits it into two triangles that face the side of the input faces under it
+  FOLDED_QUAD,                   ///< a quad extracted from an integer-grid map is folded against the surface: neither of its diagonals splits it into two triangles that face the side of the input faces under it; or the planarization of a quad mesh folded a quad that the input did not fold
   NON_DISK_CELL                  ///< a cell of an integer-grid map is not a disk: it goes around a hole or a handle of the surface, or passes twice through a point, and cannot be made into polygons of a mesh: the quad size is larger than that part of the surface
 };
 

@@ -50,6 +50,7 @@ struct Planarization_result
   double distance_bound = 0;                   ///< `max_distance_to_surface` used: the largest `max_distance` a success allows
   double mean_edge_length = 0;                 ///< mean edge length of the input quad mesh
   double max_displacement = 0;                 ///< largest vertex motion
+  std::size_t folded_quads = 0;                ///< quads of the last iterate folded (neither diagonal gives two triangles facing the side of the input quad's normal) that the input did not fold: 0 on success (otherwise `Error_code::FOLDED_QUAD`)
   std::size_t fairness_rows = 0;               ///< second differences in the fairness term
   bool gauss_newton_ran = false;               ///< the local-global iterations failed and the Gauss-Newton method ran
   std::size_t gauss_newton_steps = 0;          ///< its kept steps
@@ -71,7 +72,10 @@ struct Planarization_result
 /// moves the vertices of the quad mesh `qm` until the planarity of every face is at
 /// most `planarity_threshold`, keeping them close to the triangle mesh `reference`
 /// and the mesh fair. The result is checked before it is returned: it is a success only
-/// if no vertex ended farther than `max_distance_to_surface` from `reference`.
+/// if no vertex ended farther than `max_distance_to_surface` from `reference`, and no
+/// quad is folded that the input did not fold (folded: neither diagonal splits it into
+/// two triangles that face the side of the input quad's normal, the cross product of
+/// its diagonals).
 ///
 /// <b>Energy</b> (after Liu et al. 2006): planarity, closeness to the reference and
 /// fairness, `sum_f |C (X_f - P_f)|^2 + wc sum_i |x_i - a_i|^2 + wf sum_j |D_j X - b_j|^2`:
@@ -103,7 +107,7 @@ struct Planarization_result
 /// mean quad edge, `s_i` the closest point of the reference and `m_i` the unit normal of the
 /// input quad mesh at vertex `i` (the sum of the cross products of the diagonals of its
 /// quads), so that vertices may slide along the surface (`t` = `g` = 1e-3). A step is
-/// kept only if this energy falls. After each kept step, `w_f` doubles on every quad
+/// kept only if this energy falls and it folds no quad that the input did not fold. After each kept step, `w_f` doubles on every quad
 /// above 0.8 times the threshold and `c_i` on every vertex farther than 0.8 times
 /// `max_distance_to_surface` (both start at 1 and stay below 1e4), until every quad is
 /// within the threshold and every vertex within the bound, or `gauss_newton_steps` steps.
@@ -201,7 +205,9 @@ struct Planarization_result
 ///          `DID_NOT_CONVERGE` when `number_of_iterations` iterations did not reach the threshold;
 ///          `TOO_FAR_FROM_SURFACE` when they reached it with a vertex farther than `max_distance_to_surface`
 ///          from `reference`, or stopped before it with such a vertex and the pull towards the surface at its
-///          floor (`Planarization_result::left_surface`; `Planarization_result::max_distance` tells how far). On failure `qm` is left as it was;
+///          floor (`Planarization_result::left_surface`; `Planarization_result::max_distance` tells how far);
+///          `FOLDED_QUAD` when they reached it within the bound but folded a quad that the input did not fold
+///          (`Planarization_result::folded_quads`). On failure `qm` is left as it was;
 ///          `result` holds the measurements either way.
 ///
 /// \sa `quad_planarity()`, `extract_quad_mesh()`

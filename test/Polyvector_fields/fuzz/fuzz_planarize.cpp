@@ -34,7 +34,8 @@
 // Checked: the code is the documented one for a bad input, and one of the
 // documented codes otherwise; on failure the points of the quad mesh are
 // unchanged (bit for bit); on SUCCESS result.converged, every quad at most
-// planarity_threshold (quad_planarity() of its points), every vertex finite
+// planarity_threshold (quad_planarity() of its points), no quad folded that
+// the input did not fold (and FOLDED_QUAD only with a count), every vertex finite
 // and at most result.distance_bound from the reference (the parameter when
 // given), at most number_of_iterations iterations, and none when the input
 // was already planar enough (points unchanged).
@@ -50,6 +51,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -57,6 +59,14 @@
 namespace pvf_fuzz_planarize {
 
 using namespace pvf_fuzz;
+
+// a number in a failed check's message, to its last digit
+std::string number(double x)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
 
 inline Mesh quad_grid(std::size_t rows, std::size_t cols, double saddle)
 {
@@ -139,6 +149,22 @@ inline double face_planarity(Face f, const Mesh& m)
   return PVF::quad_planarity(p[0], p[1], p[2], p[3]);
 }
 
+// A quad folded at the points `at`: neither diagonal splits it into two
+// triangles that face the side of its normal at the points `input` (the cross
+// product of its diagonals), the definition of planarize_quad_mesh(),
+// written again here with CGAL's vectors.
+inline bool folded_face(Face f, const Mesh& m, const std::vector<Point>& input, const std::vector<Point>& at)
+{
+  std::vector<std::size_t> v;
+  for(auto w : CGAL::vertices_around_face(halfedge(f, m), m))
+    v.push_back(std::size_t(w));
+  const Vector normal = CGAL::cross_product(input[v[2]] - input[v[0]], input[v[3]] - input[v[1]]);
+  auto against = [&](int a, int b, int c) {
+    return CGAL::cross_product(at[v[b]] - at[v[a]], at[v[c]] - at[v[a]]) * normal <= 0;
+  };
+  return (against(0, 1, 2) || against(0, 2, 3)) && (against(1, 2, 3) || against(1, 3, 0));
+}
+
 inline void displace(Mesh& m, Byte_reader& in, double scale)
 {
   for(auto v : vertices(m))
@@ -218,7 +244,8 @@ PVF_FUZZ_TARGET(planarize)
                                        code_name(expected));
   else
     PVF_FUZZ_CHECK(code == Error_code::SUCCESS || code == Error_code::DID_NOT_CONVERGE ||
-                     code == Error_code::TOO_FAR_FROM_SURFACE || code == Error_code::SOLVER_FAILURE,
+                     code == Error_code::TOO_FAR_FROM_SURFACE || code == Error_code::FOLDED_QUAD ||
+                     code == Error_code::SOLVER_FAILURE,
                    "undocumented code " + code_name(code));
   PVF_FUZZ_CHECK(!result.left_surface || code == Error_code::TOO_FAR_FROM_SURFACE ||
                    (code == Error_code::SUCCESS && result.gauss_newton_ran),
@@ -226,6 +253,8 @@ PVF_FUZZ_TARGET(planarize)
   PVF_FUZZ_CHECK(result.gauss_newton_steps <= 50, std::to_string(result.gauss_newton_steps) + " Gauss-Newton steps");
   if(code == Error_code::TOO_FAR_FROM_SURFACE)
     PVF_FUZZ_CHECK(!(result.max_distance <= result.distance_bound), "TOO_FAR_FROM_SURFACE within distance_bound");
+  if(code == Error_code::FOLDED_QUAD)
+    PVF_FUZZ_CHECK(result.folded_quads > 0, "FOLDED_QUAD without a folded quad");
   if(code != Error_code::SUCCESS)
   {
     PVF_FUZZ_CHECK(same_points(before, points_of(qm)), "a failed planarization moved the points: " + code_name(code));
@@ -251,8 +280,15 @@ PVF_FUZZ_TARGET(planarize)
   {
     const double planarity = face_planarity(f, qm);
     PVF_FUZZ_CHECK(planarity <= threshold * (1 + 1e-6) + 1e-12,
-                   "a face of planarity " + std::to_string(planarity) + " above " + std::to_string(threshold));
+                   "a face of planarity " + number(planarity) + " above " + number(threshold) +
+                     " (result.max_planarity_after " + number(result.max_planarity_after) + ", Gauss-Newton " +
+                     (result.gauss_newton_ran ? "ran" : "did not run") + ")");
   }
+  const std::vector<Point> after = points_of(qm);
+  for(Face f : faces(qm))
+    PVF_FUZZ_CHECK(folded_face(f, qm, before, before) || !folded_face(f, qm, before, after),
+                   "a quad folded by a successful planarization");
+  PVF_FUZZ_CHECK(result.folded_quads == 0, "SUCCESS with folded_quads");
   for(auto v : vertices(qm))
   {
     const Point& p = qm.point(v);

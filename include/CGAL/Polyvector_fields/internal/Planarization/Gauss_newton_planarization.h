@@ -69,6 +69,7 @@ struct Gauss_newton_report
   double max_distance = 0;       // mesh units
   double mean_distance = 0;      // mesh units
   double time = 0;
+  std::size_t folded_quads = 0;  // quads of the last kept iterate that the input did not fold (0 by construction)
 };
 
 // The largest and mean planarity of the quads at positions Y (rows), and
@@ -90,6 +91,48 @@ inline void planarity_of_quads(const Eigen::MatrixXd& Y, const std::vector<std::
   }
   mean = quads.empty() ? 0 : sum / double(quads.size());
 }
+
+// Folds. A quad is folded when neither diagonal splits it into two triangles
+// that face the side of `normal`, its normal in the input (the cross product
+// of its diagonals, as the quad meshes of the package are checked). A
+// planarization may not fold a quad that the input did not fold.
+inline bool folded_quad(const Eigen::MatrixXd& Y, const std::array<std::size_t, 4>& q, const Eigen::Vector3d& normal)
+{
+  Eigen::Vector3d p[4];
+  for(int k = 0; k < 4; ++k)
+    p[k] = Y.row(Eigen::Index(q[std::size_t(k)])).transpose();
+  auto against = [&](int a, int b, int c) { return (p[b] - p[a]).cross(p[c] - p[a]).dot(normal) <= 0; };
+  return (against(0, 1, 2) || against(0, 2, 3)) && (against(1, 2, 3) || against(1, 3, 0));
+}
+
+struct Quad_folds
+{
+  std::vector<Eigen::Vector3d> normal;  // of each input quad
+  std::vector<char> folded_in_input;
+
+  Quad_folds(const Eigen::MatrixXd& Y0, const std::vector<std::array<std::size_t, 4> >& quads)
+    : normal(quads.size()), folded_in_input(quads.size(), 0)
+  {
+    for(std::size_t f = 0; f < quads.size(); ++f)
+    {
+      const auto& q = quads[f];
+      const Eigen::Vector3d d1 = (Y0.row(Eigen::Index(q[2])) - Y0.row(Eigen::Index(q[0]))).transpose();
+      const Eigen::Vector3d d2 = (Y0.row(Eigen::Index(q[3])) - Y0.row(Eigen::Index(q[1]))).transpose();
+      normal[f] = d1.cross(d2);
+      folded_in_input[f] = folded_quad(Y0, q, normal[f]);
+    }
+  }
+
+  // the quads folded at Y that the input did not fold
+  std::size_t new_folds(const Eigen::MatrixXd& Y, const std::vector<std::array<std::size_t, 4> >& quads) const
+  {
+    std::size_t count = 0;
+    for(std::size_t f = 0; f < quads.size(); ++f)
+      if(!folded_in_input[f] && folded_quad(Y, quads[f], normal[f]))
+        ++count;
+    return count;
+  }
+};
 
 // `closest(X, S, distance)` gives, for the rows of X (mesh units), the
 // closest points S and their distances. DtD: D^T D for the second differences
@@ -114,6 +157,7 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
   const Eigen::MatrixXd Y0 = X0 / edge;
   const double scaled_bound = bound / edge;
   Eigen::MatrixXd Y = Y0;
+  const Quad_folds folds(Y0, quads);
 
   // the normals of the best-fit planes
   Eigen::MatrixXd Nf(Eigen::Index(F), 3);
@@ -350,7 +394,8 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       std::vector<double> dn;
       closest_at(Yn, Sn, dn);
       const double e_new = energy(Yn, Nn, Sn, M);
-      if(std::isfinite(e_new) && e_new < e_current)
+      // a step that folds a quad is rejected as one that does not lower the energy
+      if(std::isfinite(e_new) && e_new < e_current && folds.new_folds(Yn, quads) == 0)
       {
         Y.swap(Yn);
         Nf.swap(Nn);
@@ -377,7 +422,14 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
         cw[i] *= 2;
     e_current = energy(Y, Nf, S, M);
   }
-  X = Y * edge;
+  X = report.steps == 0 ? X0 : Eigen::MatrixXd(Y * edge);
+  // The outcome is measured again on the points returned: scaling back rounds
+  // the coordinates, and the planarity of a nearly degenerate quad (diagonals
+  // almost parallel) can change by far more than that rounding (found by
+  // fuzzing: 5e-9 on Y, 9.9e-8 on X, for a threshold of 1.3e-8).
+  planarity_of_quads(X, quads, planarity, mx, mean);
+  report.folded_quads = folds.new_folds(X, quads);
+  within = mx <= threshold && largest(distance) <= scaled_bound && report.folded_quads == 0;
   report.succeeded = within;
   report.max_planarity = mx;
   report.mean_planarity = mean;

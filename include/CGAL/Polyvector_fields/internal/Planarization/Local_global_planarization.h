@@ -416,6 +416,9 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   // leaving the surface are not a success.
   else if(!(dmax <= result.distance_bound))
     code = Error_code::TOO_FAR_FROM_SURFACE;
+  // nor are planar faces bought by folding a quad
+  else if((result.folded_quads = Quad_folds(X0, mesh.quads).new_folds(X, mesh.quads)) > 0)
+    code = Error_code::FOLDED_QUAD;
   if(code != Error_code::SUCCESS && p.gauss_newton_steps > 0 && result.mean_edge_length > 0)
   {
     // The second method, from the input: on success its result replaces the
@@ -442,6 +445,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
       result.max_distance = g.max_distance;
       result.mean_distance = g.mean_distance;
       result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
+      result.folded_quads = g.folded_quads;
       code = Error_code::SUCCESS;
     }
   }

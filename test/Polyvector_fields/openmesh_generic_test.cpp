@@ -133,12 +133,16 @@ struct Road_outcome
 {
   std::size_t refined_faces = 0, feature_edges = 0, constraints = 0, integer_unknowns = 0, flipped_faces = 0;
   std::size_t quads = 0, quad_vertices = 0;
+  std::vector<double> extracted_points;  // per quad vertex before the planarization, in the order of vertices(quads)
   std::vector<double> quad_points;  // per quad vertex after the planarization, in the order of vertices(quads)
   std::vector<double> points;       // per vertex, in the order of vertices(tm)
   std::vector<Complex> field;       // per face, in the order of faces(tm)
   std::vector<double> uv;           // per corner, in the order of faces(tm) and of each face's halfedges
   PVF::Error_code planarization = PVF::Error_code::SUCCESS;
   double planarity_after = -1, max_distance = -1;
+  bool gauss_newton_ran = false;
+  std::size_t gauss_newton_steps = 0, gauss_newton_rejected_steps = 0;
+  double gauss_newton_max_planarity = -1, gauss_newton_max_distance = -1;
 };
 
 // The points of an OpenMesh in double precision. CGAL's own point map of
@@ -218,11 +222,19 @@ Road_outcome meshing_road(TriangleMesh& tm, VertexPointMap points, double h)
   EXPECT_EQ(PVF::extract_quad_mesh(tm, uv, quads, extraction), PVF::Error_code::SUCCESS);
   out.quads = num_faces(quads);
   out.quad_vertices = num_vertices(quads);
+  for(auto v : vertices(quads))
+    for(int k = 0; k < 3; ++k)
+      out.extracted_points.push_back(quads.point(v)[k]);
   PVF::Planarization_result planarization;
   // a few iterations: the test is about the reference mesh's type, not the target
   out.planarization = PVF::planarize_quad_mesh(quads, tm, planarization, CGAL::parameters::number_of_iterations(3));
   out.planarity_after = planarization.max_planarity_after;
   out.max_distance = planarization.max_distance;
+  out.gauss_newton_ran = planarization.gauss_newton_ran;
+  out.gauss_newton_steps = planarization.gauss_newton_steps;
+  out.gauss_newton_rejected_steps = planarization.gauss_newton_rejected_steps;
+  out.gauss_newton_max_planarity = planarization.gauss_newton_max_planarity;
+  out.gauss_newton_max_distance = planarization.gauss_newton_max_distance;
   for(auto v : vertices(quads))
     for(int k = 0; k < 3; ++k)
       out.quad_points.push_back(quads.point(v)[k]);
@@ -272,21 +284,36 @@ TEST(OpenMesh, MeshingRoadMatchesSurfaceMesh)
   EXPECT_EQ(o.quads, s.quads);
   EXPECT_EQ(o.quad_vertices, s.quad_vertices);
   // the planarization ran its iterations (3 do not reach 1% here, then its
-  // Gauss-Newton steps) against each reference surface: the same quads, point
-  // by point, to rounding. Not bit for bit: a closest point on an edge shared
-  // by two triangles is projected onto either, depending on where the AABB
-  // tree's search starts, which depends on the first halfedge of each face;
-  // the Gauss-Newton steps query many such points (on fandisk's creases).
-  EXPECT_EQ(s.planarization, PVF::Error_code::SUCCESS);
-  EXPECT_GT(s.planarity_after, 0.0);
-  EXPECT_LE(s.planarity_after, 0.01);
-  EXPECT_GT(s.max_distance, 0.0);
+  // Gauss-Newton steps) against each reference surface: the same outcome, the
+  // same steps, and the same figures and quads to rounding. Not bit for bit: a
+  // closest point on an edge shared by two triangles is projected onto
+  // either, depending on where the AABB tree's search starts, which depends
+  // on the first halfedge of each face; the Gauss-Newton steps query many
+  // such points (on fandisk's creases). Since the steps may fold no quad,
+  // they no longer reach 1% here (before that rule they did): the outcome is
+  // a failure, with the quads as extracted.
   EXPECT_EQ(o.planarization, s.planarization);
+  EXPECT_GT(s.max_distance, 0.0);
   EXPECT_NEAR(o.planarity_after, s.planarity_after, 1e-6);
   EXPECT_NEAR(o.max_distance, s.max_distance, 1e-6 * h);
+  EXPECT_TRUE(s.gauss_newton_ran);
+  EXPECT_TRUE(o.gauss_newton_ran);
+  EXPECT_GT(s.gauss_newton_steps, 0u);
+  EXPECT_EQ(o.gauss_newton_steps, s.gauss_newton_steps);
+  EXPECT_EQ(o.gauss_newton_rejected_steps, s.gauss_newton_rejected_steps);
+  EXPECT_GT(s.gauss_newton_max_planarity, 0.0);
+  EXPECT_NEAR(o.gauss_newton_max_planarity, s.gauss_newton_max_planarity, 1e-6);
+  EXPECT_NEAR(o.gauss_newton_max_distance, s.gauss_newton_max_distance, 1e-6 * h);
   EXPECT_LE(largest_difference(o.quad_points, s.quad_points), 1e-6 * h);
-  std::cout << "planarized quads, OpenMesh against Surface_mesh: points " << largest_difference(o.quad_points, s.quad_points)
-            << " apart at most (quad size " << h << ")\n";
+  if(s.planarization == PVF::Error_code::SUCCESS)
+    EXPECT_LE(s.planarity_after, 0.01);
+  else
+    EXPECT_EQ(largest_difference(s.quad_points, s.extracted_points), 0.0);  // the mesh as it was
+  std::cout << "planarized quads, OpenMesh against Surface_mesh: outcome " << int(s.planarization) << ", "
+            << s.gauss_newton_steps << " Gauss-Newton steps (" << s.gauss_newton_rejected_steps
+            << " rejected) to planarity " << s.gauss_newton_max_planarity << " on both to "
+            << std::abs(o.gauss_newton_max_planarity - s.gauss_newton_max_planarity) << "; points "
+            << largest_difference(o.quad_points, s.quad_points) << " apart at most (quad size " << h << ")\n";
 }
 
 TEST(OpenMesh, DesignRootsSingularitiesAndEnergy)

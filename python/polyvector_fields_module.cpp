@@ -1389,6 +1389,7 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
   info["gauss_newton_ran"] = r.gauss_newton_ran;
   info["gauss_newton_steps"] = r.gauss_newton_steps;
   info["gauss_newton_rejected_steps"] = r.gauss_newton_rejected_steps;
+  info["gauss_newton_stalled"] = r.gauss_newton_stalled;
   info["gauss_newton_max_planarity"] = r.gauss_newton_max_planarity;
   info["gauss_newton_max_distance"] = r.gauss_newton_max_distance;
   info["iterations"] = r.iterations;

@@ -350,7 +350,8 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
     ``gauss_newton_steps`` Gauss-Newton steps (default 50, 0 for none) from
     the input, over the vertices and a normal per quad
     (``info["gauss_newton_ran"]``, ``info["gauss_newton_steps"]``,
-    ``info["gauss_newton_rejected_steps"]``, and where they got to:
+    ``info["gauss_newton_rejected_steps"]``, ``info["gauss_newton_stalled"]``
+    when they stopped after three steps without progress, and where they got to:
     ``info["gauss_newton_max_planarity"]``, ``info["gauss_newton_max_distance"]``).
     ``max_distance_to_surface``
     bounds how far a vertex may end from the surface (default 5% of the mean

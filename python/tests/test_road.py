@@ -90,6 +90,8 @@ def test_planarize_gauss_newton_steps_bound_the_second_method():
     Vp, info = pvf.planarize(Vq, Fq, V, F, threshold=0.01, number_of_iterations=1, gauss_newton_steps=3)
     assert info["gauss_newton_ran"]
     assert 1 <= info["gauss_newton_steps"] <= 3
+    # stopping for want of progress takes four kept steps: one sets the best
+    assert info["gauss_newton_stalled"] is False
     if info["status"] == "SUCCESS":
         _, after = pvf.quad_planarity(Vp, Fq)
         assert after["max"] <= 0.01

@@ -416,6 +416,74 @@ TEST(PlanarizationGaussNewton, NeverFoldsAQuad)
   }
 }
 
+// The Gauss-Newton steps stop when three kept steps in a row make no
+// progress: neither the largest planarity nor the largest distance falls
+// below 0.99 of its mark (its value after the first step, or when it last
+// fell so). Here the bound (1e-4 of the mean edge) leaves the quads no room
+// to become planar to 0.1%, so the method cannot succeed. The method is
+// deterministic, so a run with a budget of j steps is the first j steps of
+// the full run: both measures after each step are read from those runs, and
+// the rule, applied here to that sequence, stops where the method stopped,
+// and not before. (NeverFoldsAQuad holds the rule to a success that the
+// larger of the two ratios to their bounds would have stopped.)
+TEST(PlanarizationGaussNewton, StopsAfterThreeStepsWithoutProgress)
+{
+  Mesh quads, reference;
+  height_field_grid(8, [](double x, double y) { return 0.3 * std::sin(3 * x) * std::cos(2 * y) + 0.2 * x * y; }, quads,
+                    reference);
+  const double edge = mean_edge_length(quads), threshold = 1e-3;
+  namespace P = PVF::parameters;
+  auto run = [&](std::size_t budget, PVF::Planarization_result& r) {
+    Mesh m = quads;
+    return PVF::planarize_quad_mesh(
+      m, reference, r,
+      P::planarity_threshold(threshold, P::gauss_newton_steps(budget, P::max_distance_to_surface(1e-4 * edge)))
+        .number_of_iterations(5));
+  };
+  PVF::Planarization_result full;
+  ASSERT_NE(run(50, full), PVF::Error_code::SUCCESS);
+  ASSERT_TRUE(full.gauss_newton_ran);
+  ASSERT_TRUE(full.gauss_newton_stalled);
+  const std::size_t k = full.gauss_newton_steps;
+  ASSERT_GE(k, 4u);  // one step to set the best, three without progress
+  ASSERT_LT(k, 50u);
+  std::vector<double> planarity, distance;  // after each step
+  for(std::size_t j = 1; j <= k; ++j)
+  {
+    PVF::Planarization_result r;
+    run(j, r);
+    ASSERT_EQ(r.gauss_newton_steps, j);
+    EXPECT_EQ(r.gauss_newton_stalled, j == k) << "after " << j << " steps";
+    planarity.push_back(r.gauss_newton_max_planarity);
+    distance.push_back(r.gauss_newton_max_distance);
+  }
+  EXPECT_EQ(planarity.back(), full.gauss_newton_max_planarity);
+  EXPECT_EQ(distance.back(), full.gauss_newton_max_distance);
+  double planarity_mark = std::numeric_limits<double>::infinity(), distance_mark = planarity_mark;
+  std::size_t without_progress = 0, stop = 0;
+  for(std::size_t j = 0; j < k && stop == 0; ++j)
+  {
+    bool progress = false;
+    if(planarity[j] < 0.99 * planarity_mark)
+    {
+      planarity_mark = planarity[j];
+      progress = true;
+    }
+    if(distance[j] < 0.99 * distance_mark)
+    {
+      distance_mark = distance[j];
+      progress = true;
+    }
+    without_progress = progress ? 0 : without_progress + 1;
+    if(without_progress == 3)
+      stop = j + 1;
+  }
+  EXPECT_EQ(stop, k);
+  std::cout << "stalled after " << k << " Gauss-Newton steps: planarity " << planarity.front() << " to "
+            << planarity.back() << ", distance " << distance.front() / edge << " to " << distance.back() / edge
+            << " mean edges\n";
+}
+
 // The Gauss-Newton steps on the cores give the same numbers as on one core,
 // bit for bit (each quad's blocks and each vertex's closest point are
 // computed alone, and summed in order): the 48 x 48 grid of the test above,

@@ -142,6 +142,7 @@ struct Road_outcome
   double planarity_after = -1, max_distance = -1;
   bool gauss_newton_ran = false;
   std::size_t gauss_newton_steps = 0, gauss_newton_rejected_steps = 0;
+  bool gauss_newton_stalled = false;
   double gauss_newton_max_planarity = -1, gauss_newton_max_distance = -1;
 };
 
@@ -233,6 +234,7 @@ Road_outcome meshing_road(TriangleMesh& tm, VertexPointMap points, double h)
   out.gauss_newton_ran = planarization.gauss_newton_ran;
   out.gauss_newton_steps = planarization.gauss_newton_steps;
   out.gauss_newton_rejected_steps = planarization.gauss_newton_rejected_steps;
+  out.gauss_newton_stalled = planarization.gauss_newton_stalled;
   out.gauss_newton_max_planarity = planarization.gauss_newton_max_planarity;
   out.gauss_newton_max_distance = planarization.gauss_newton_max_distance;
   for(auto v : vertices(quads))
@@ -301,6 +303,7 @@ TEST(OpenMesh, MeshingRoadMatchesSurfaceMesh)
   EXPECT_GT(s.gauss_newton_steps, 0u);
   EXPECT_EQ(o.gauss_newton_steps, s.gauss_newton_steps);
   EXPECT_EQ(o.gauss_newton_rejected_steps, s.gauss_newton_rejected_steps);
+  EXPECT_EQ(o.gauss_newton_stalled, s.gauss_newton_stalled);
   EXPECT_GT(s.gauss_newton_max_planarity, 0.0);
   EXPECT_NEAR(o.gauss_newton_max_planarity, s.gauss_newton_max_planarity, 1e-6);
   EXPECT_NEAR(o.gauss_newton_max_distance, s.gauss_newton_max_distance, 1e-6 * h);

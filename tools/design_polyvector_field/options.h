@@ -16,6 +16,7 @@
 
 #include <CGAL/Polyvector_fields/Default_sparse_solver.h>
 #include <CGAL/Polyvector_fields/Smoothness_weights.h>
+#include <CGAL/Polyvector_fields/planarize_quad_mesh.h>
 #include <CGAL/Polyvector_fields/IO/internal/text_parsing.h>
 
 #include <cstdlib>
@@ -161,8 +162,10 @@ struct Options
   std::string out_field, out_singularities, out_vtk, out_mesh, out_param, out_quads, out_quads_vtk;
   std::string out_html, out_ply;  // --out-html, --out-ply
   double planarity_threshold = 0;  // 0: no planarization
-  double max_surface_distance = 0.05;  // --max-surface-distance, in mean quad edges
-  std::size_t gauss_newton_steps = 50;  // --gauss-newton-steps
+  // --max-surface-distance, in mean quad edges; the function's own default
+  double max_surface_distance = PVF::internal::default_distance_fraction;
+  // --gauss-newton-steps; the function's own default
+  std::size_t gauss_newton_steps = PVF::internal::Planarization_parameters().gauss_newton_steps;
   bool default_outputs = false;  // output/<mesh name>.*, the folder made if needed
 
   bool frame_field() const { return curvature_percent >= 0 || angle_bound_degrees >= 0 || conjugate || parametrize; }

@@ -288,9 +288,13 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << " iterations (it got to max " << 100 * r.max_planarity_after << "%, mean "
                   << 100 * r.mean_planarity_after << "%): the quad mesh is written as extracted";
       if(q.planarization_code != PVF::Error_code::SUCCESS && r.gauss_newton_ran)
+      {
         std::cout << "; then " << r.gauss_newton_steps << " Gauss-Newton steps (" << r.gauss_newton_rejected_steps
                   << " rejected) got to max " << 100 * r.gauss_newton_max_planarity << "% with a vertex "
                   << 100 * r.gauss_newton_max_distance / r.mean_edge_length << "% of the mean quad edge away";
+        if(r.gauss_newton_stalled)
+          std::cout << " (they stopped: three steps made no progress)";
+      }
     }
     std::cout << "\n";
   }

@@ -54,7 +54,8 @@ struct Planarization_result
   std::size_t fairness_rows = 0;               ///< second differences in the fairness term
   bool gauss_newton_ran = false;               ///< the local-global iterations failed and the Gauss-Newton method ran
   std::size_t gauss_newton_steps = 0;          ///< its kept steps
-  std::size_t gauss_newton_rejected_steps = 0; ///< its rejected steps (the energy did not fall)
+  std::size_t gauss_newton_rejected_steps = 0; ///< its rejected steps (the energy did not fall, or a quad folded)
+  bool gauss_newton_stalled = false;            ///< it stopped after three kept steps without progress
   double gauss_newton_max_planarity = 0;       ///< largest face planarity of its last kept iterate
   double gauss_newton_max_distance = 0;        ///< largest distance of a vertex of its last kept iterate to the reference
   // times in seconds
@@ -110,7 +111,10 @@ struct Planarization_result
 /// kept only if this energy falls and it folds no quad that the input did not fold. After each kept step, `w_f` doubles on every quad
 /// above 0.8 times the threshold and `c_i` on every vertex farther than 0.8 times
 /// `max_distance_to_surface` (both start at 1 and stay below 1e4), until every quad is
-/// within the threshold and every vertex within the bound, or `gauss_newton_steps` steps.
+/// within the threshold and every vertex within the bound, or `gauss_newton_steps` steps,
+/// or three kept steps in a row without progress: neither the largest planarity nor the
+/// largest distance to the reference has fallen below 0.99 of its mark, the value it had
+/// at the first kept step or when it last fell so (`Planarization_result::gauss_newton_stalled`).
 /// Each step factors a system of the three coordinates of every vertex (the
 /// normals are eliminated quad by quad), so a step costs about nine times a
 /// local-global factorization; on success its result replaces the local-global one,

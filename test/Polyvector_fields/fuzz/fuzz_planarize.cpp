@@ -251,6 +251,11 @@ PVF_FUZZ_TARGET(planarize)
                    (code == Error_code::SUCCESS && result.gauss_newton_ran),
                  "left_surface with " + code_name(code));
   PVF_FUZZ_CHECK(result.gauss_newton_steps <= 50, std::to_string(result.gauss_newton_steps) + " Gauss-Newton steps");
+  // a stop for want of progress takes four kept steps (one sets the marks) and is a failure
+  PVF_FUZZ_CHECK(!result.gauss_newton_stalled ||
+                   (result.gauss_newton_ran && result.gauss_newton_steps >= 4 && code != Error_code::SUCCESS),
+                 "stalled after " + std::to_string(result.gauss_newton_steps) + " Gauss-Newton steps with " +
+                   code_name(code));
   if(code == Error_code::TOO_FAR_FROM_SURFACE)
     PVF_FUZZ_CHECK(!(result.max_distance <= result.distance_bound), "TOO_FAR_FROM_SURFACE within distance_bound");
   if(code == Error_code::FOLDED_QUAD)

@@ -407,6 +407,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   result.mean_distance = dmean;
   result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
   result.converged = mx <= p.threshold;
+  const Quad_folds folds(X0, mesh.quads);  // the quads the input folds, for both methods
   Error_code code = Error_code::SUCCESS;
   if(result.left_surface)
     code = Error_code::TOO_FAR_FROM_SURFACE;
@@ -417,7 +418,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   else if(!(dmax <= result.distance_bound))
     code = Error_code::TOO_FAR_FROM_SURFACE;
   // nor are planar faces bought by folding a quad
-  else if((result.folded_quads = Quad_folds(X0, mesh.quads).new_folds(X, mesh.quads)) > 0)
+  else if((result.folded_quads = folds.new_folds(X, mesh.quads)) > 0)
     code = Error_code::FOLDED_QUAD;
   if(code != Error_code::SUCCESS && p.gauss_newton_steps > 0 && result.mean_edge_length > 0)
   {
@@ -428,11 +429,12 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
       closest.hinted_by_own(Y, S_, d_, p.parallel);
     };
     Gauss_newton_report g;
-    gauss_newton_planarization(X0, mesh.quads, DtD, result.mean_edge_length, p.threshold, result.distance_bound,
+    gauss_newton_planarization(X0, mesh.quads, folds, DtD, result.mean_edge_length, p.threshold, result.distance_bound,
                                p.gauss_newton_steps, p.parallel, solver, closest_points_of, Xg, g);
     result.gauss_newton_ran = true;
     result.gauss_newton_steps = g.steps;
     result.gauss_newton_rejected_steps = g.rejected;
+    result.gauss_newton_stalled = g.stalled;
     result.gauss_newton_max_planarity = g.max_planarity;
     result.gauss_newton_max_distance = g.max_distance;
     result.time_gauss_newton = g.time;

@@ -1392,6 +1392,9 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
   info["gauss_newton_stalled"] = r.gauss_newton_stalled;
   info["gauss_newton_max_planarity"] = r.gauss_newton_max_planarity;
   info["gauss_newton_max_distance"] = r.gauss_newton_max_distance;
+  info["gauss_newton_max_distance_to_quads"] = r.gauss_newton_max_distance_to_quads;
+  info["max_distance_to_quads_before"] = r.max_distance_to_quads_before;
+  info["max_distance_to_quads"] = r.max_distance_to_quads;
   info["iterations"] = r.iterations;
   info["threshold"] = r.threshold;
   info["max_planarity_before"] = r.max_planarity_before;

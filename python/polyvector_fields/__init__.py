@@ -355,8 +355,13 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
     ``info["gauss_newton_max_planarity"]``, ``info["gauss_newton_max_distance"]``).
     ``max_distance_to_surface``
     bounds how far a vertex may end from the surface (default 5% of the mean
-    quad edge), and no quad may be folded that was not (neither diagonal
-    splitting it into two triangles that face the side of its input normal).
+    quad edge), and how much farther the surface may end from the quads than
+    from the input quads (``info["max_distance_to_quads"]`` and
+    ``info["max_distance_to_quads_before"]``: quads that shrink away from a
+    border or cut a crease are not a success); vertices on the border and on
+    the surface's creases slide along them only. No quad may be folded that
+    was not (neither diagonal splitting it into two triangles that face the
+    side of its input normal).
     When the threshold is not reached (``info["status"]`` is
     ``"DID_NOT_CONVERGE"``, ``"TOO_FAR_FROM_SURFACE"``, or ``"FOLDED_QUAD"``
     with ``info["folded_quads"]``), the quad mesh is

@@ -144,6 +144,7 @@ struct Road_outcome
   std::size_t gauss_newton_steps = 0, gauss_newton_rejected_steps = 0;
   bool gauss_newton_stalled = false;
   double gauss_newton_max_planarity = -1, gauss_newton_max_distance = -1;
+  double max_distance_to_quads_before = -1, max_distance_to_quads = -1, gauss_newton_max_distance_to_quads = -1;
 };
 
 // The points of an OpenMesh in double precision. CGAL's own point map of
@@ -237,6 +238,9 @@ Road_outcome meshing_road(TriangleMesh& tm, VertexPointMap points, double h)
   out.gauss_newton_stalled = planarization.gauss_newton_stalled;
   out.gauss_newton_max_planarity = planarization.gauss_newton_max_planarity;
   out.gauss_newton_max_distance = planarization.gauss_newton_max_distance;
+  out.max_distance_to_quads_before = planarization.max_distance_to_quads_before;
+  out.max_distance_to_quads = planarization.max_distance_to_quads;
+  out.gauss_newton_max_distance_to_quads = planarization.gauss_newton_max_distance_to_quads;
   for(auto v : vertices(quads))
     for(int k = 0; k < 3; ++k)
       out.quad_points.push_back(quads.point(v)[k]);
@@ -307,6 +311,9 @@ TEST(OpenMesh, MeshingRoadMatchesSurfaceMesh)
   EXPECT_GT(s.gauss_newton_max_planarity, 0.0);
   EXPECT_NEAR(o.gauss_newton_max_planarity, s.gauss_newton_max_planarity, 1e-6);
   EXPECT_NEAR(o.gauss_newton_max_distance, s.gauss_newton_max_distance, 1e-6 * h);
+  EXPECT_NEAR(o.max_distance_to_quads_before, s.max_distance_to_quads_before, 1e-6 * h);
+  EXPECT_NEAR(o.max_distance_to_quads, s.max_distance_to_quads, 1e-6 * h);
+  EXPECT_NEAR(o.gauss_newton_max_distance_to_quads, s.gauss_newton_max_distance_to_quads, 1e-6 * h);
   EXPECT_LE(largest_difference(o.quad_points, s.quad_points), 1e-6 * h);
   if(s.planarization == PVF::Error_code::SUCCESS)
     EXPECT_LE(s.planarity_after, 0.01);

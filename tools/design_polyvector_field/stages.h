@@ -664,8 +664,9 @@ bool make_quad_mesh(const Options& o, const Mesh& tm, const Bundle& bundle, cons
       q.quads, tm, q.planarization,
       PVF::parameters::max_distance_to_surface(
         o.max_surface_distance * mean_edge,
-        PVF::parameters::gauss_newton_steps(o.gauss_newton_steps,
-                                            PVF::parameters::planarity_threshold(o.planarity_threshold))));
+        PVF::parameters::gauss_newton_steps(
+          o.gauss_newton_steps, PVF::parameters::crease_angle(
+                                  crease_degrees(o), PVF::parameters::planarity_threshold(o.planarity_threshold)))));
     // Not reaching the threshold within the iterations, or only by leaving the
     // surface or folding a quad, is reported, not fatal: the quad mesh is then
     // kept as extracted.

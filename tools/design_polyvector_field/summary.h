@@ -262,7 +262,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << (r.left_surface ? "left the surface" : "failed") << ") and " << r.gauss_newton_steps
                   << " Gauss-Newton steps (" << r.gauss_newton_rejected_steps << " rejected) max " << 100 * q.after.max
                   << "%, mean " << 100 * q.after.mean << "% (threshold " << 100 * r.threshold
-                  << "%); largest distance to the surface " << r.max_distance << " ("
+                  << "%); largest distance to the surface, its border or creases " << r.max_distance << " ("
                   << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";
       else if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE && r.left_surface)
         std::cout << "; the planarization stopped after " << r.iterations << " iterations at max "
@@ -271,6 +271,12 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << "% of the mean quad edge) from the surface, beyond the bound " << r.distance_bound << " ("
                   << 100 * o.max_surface_distance
                   << "%), with the pull towards the surface at its floor: the quad mesh is written as extracted";
+      else if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE && r.max_distance <= r.distance_bound)
+        std::cout << "; the planarization reached " << 100 * r.max_planarity_after
+                  << "% only with quads that no longer covered the surface: a point of it was "
+                  << 100 * (r.max_distance_to_quads - r.max_distance_to_quads_before) / r.mean_edge_length
+                  << "% of the mean quad edge farther from them than from the quads as extracted, beyond the bound ("
+                  << 100 * o.max_surface_distance << "%): the quad mesh is written as extracted";
       else if(q.planarization_code == PVF::Error_code::TOO_FAR_FROM_SURFACE)
         std::cout << "; the planarization reached " << 100 * r.max_planarity_after << "% only by moving a vertex "
                   << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length
@@ -281,7 +287,7 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
                   << r.folded_quads << " quad(s): the quad mesh is written as extracted";
       else if(r.converged)
         std::cout << " -> after " << r.iterations << " iterations max " << 100 * q.after.max << "%, mean "
-                  << 100 * q.after.mean << "% (threshold " << 100 * r.threshold << "%); largest distance to the surface "
+                  << 100 * q.after.mean << "% (threshold " << 100 * r.threshold << "%); largest distance to the surface, its border or creases "
                   << r.max_distance << " (" << 100 * r.max_distance / r.mean_edge_length << "% of the mean quad edge)";
       else
         std::cout << "; the planarization did NOT reach " << 100 * r.threshold << "% in " << r.iterations
@@ -292,6 +298,11 @@ void print_summary(const Options& o, const Input_mesh& input, const Quad_size& s
         std::cout << "; then " << r.gauss_newton_steps << " Gauss-Newton steps (" << r.gauss_newton_rejected_steps
                   << " rejected) got to max " << 100 * r.gauss_newton_max_planarity << "% with a vertex "
                   << 100 * r.gauss_newton_max_distance / r.mean_edge_length << "% of the mean quad edge away";
+        if(r.gauss_newton_max_planarity <= r.threshold && r.gauss_newton_max_distance <= r.distance_bound &&
+           r.gauss_newton_max_distance_to_quads > r.max_distance_to_quads_before + r.distance_bound)
+          std::cout << ", but with quads that no longer covered the surface (a point of it "
+                    << 100 * (r.gauss_newton_max_distance_to_quads - r.max_distance_to_quads_before) / r.mean_edge_length
+                    << "% of the mean quad edge farther from them than from the quads as extracted)";
         if(r.gauss_newton_stalled)
           std::cout << " (they stopped: three steps made no progress)";
       }

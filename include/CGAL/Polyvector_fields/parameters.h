@@ -133,6 +133,10 @@ CGAL_PVF_ADD_NAMED_PARAMETER(max_distance_to_surface_t, max_distance_to_surface,
 // `std::size_t`: the largest number of kept steps of the Gauss-Newton method that `planarize_quad_mesh()` runs
 // when its local-global iterations fail; default 50, 0 for none.
 CGAL_PVF_ADD_NAMED_PARAMETER(gauss_newton_steps_t, gauss_newton_steps, gauss_newton_steps)
+// `double` in [0, 180], in degrees: the creases of the reference that `planarize_quad_mesh()` holds the
+// vertices on them to (edges whose faces' normals make a larger angle), and the turn of the border or of a
+// crease above which a vertex stays where it was; default 40, 180 for no crease.
+CGAL_PVF_ADD_NAMED_PARAMETER(crease_angle_t, crease_angle, crease_angle)
 
 // Curvature estimation and curvature constraints.
 CGAL_PVF_ADD_NAMED_PARAMETER(ring_size_t, ring_size, ring_size)

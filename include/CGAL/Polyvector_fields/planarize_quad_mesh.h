@@ -44,9 +44,11 @@ struct Planarization_result
   double mean_planarity_before = 0;            ///< mean face planarity of the input
   double max_planarity_after = 0;              ///< largest face planarity of the last iterate
   double mean_planarity_after = 0;             ///< mean face planarity of the last iterate
-  double max_distance = 0;                     ///< largest distance of a vertex of the last iterate to the reference surface: the worst distance, at most `distance_bound` on success
+  double max_distance = 0;                     ///< largest distance of a vertex of the last iterate to the reference surface (for a vertex on the border or a crease, the larger of that and its distance to them; for a corner, the larger of that and its distance to its input position): the worst distance, at most `distance_bound` on success
   double mean_distance = 0;                    ///< mean distance of the vertices of the last iterate to the reference surface
-  double max_distance_before = 0;              ///< largest distance of an input vertex to the reference surface
+  double max_distance_to_quads_before = 0;     ///< the other side of `max_distance_before`: the largest distance from the surface (sampled at the vertices of `reference` and of the input) to the input quads, each taken as the four triangles of its two diagonals (measured when a result needs it, 0 otherwise)
+  double max_distance_to_quads = 0;            ///< the same distance to the quads of the last iterate, measured once it reached the threshold within `distance_bound` (0 otherwise): at most `max_distance_to_quads_before + distance_bound` on success (otherwise `Error_code::TOO_FAR_FROM_SURFACE`)
+  double max_distance_before = 0;              ///< `max_distance` of the input (on a crease, a vertex may be up to 1% of the mean quad edge off it)
   double distance_bound = 0;                   ///< `max_distance_to_surface` used: the largest `max_distance` a success allows
   double mean_edge_length = 0;                 ///< mean edge length of the input quad mesh
   double max_displacement = 0;                 ///< largest vertex motion
@@ -58,8 +60,9 @@ struct Planarization_result
   bool gauss_newton_stalled = false;            ///< it stopped after three kept steps without progress
   double gauss_newton_max_planarity = 0;       ///< largest face planarity of its last kept iterate
   double gauss_newton_max_distance = 0;        ///< largest distance of a vertex of its last kept iterate to the reference
+  double gauss_newton_max_distance_to_quads = 0;  ///< `max_distance_to_quads` for its last kept iterate, measured when that iterate met the other checks (0 otherwise)
   // times in seconds
-  double time_tree = 0;            ///< the AABB tree of the reference
+  double time_tree = 0;            ///< the AABB tree of the reference, its creases and the input's border
   double time_factorization = 0;   ///< assembly and factorization of the fixed matrix
   double time_local = 0;           ///< best-fit planes (all iterations)
   double time_closest = 0;         ///< closest points on the reference (all iterations)
@@ -73,10 +76,26 @@ struct Planarization_result
 /// moves the vertices of the quad mesh `qm` until the planarity of every face is at
 /// most `planarity_threshold`, keeping them close to the triangle mesh `reference`
 /// and the mesh fair. The result is checked before it is returned: it is a success only
-/// if no vertex ended farther than `max_distance_to_surface` from `reference`, and no
-/// quad is folded that the input did not fold (folded: neither diagonal splits it into
-/// two triangles that face the side of the input quad's normal, the cross product of
-/// its diagonals).
+/// if no vertex ended farther than `max_distance_to_surface` from `reference`; if the
+/// surface is not farther from the quads than from the input quads by more than that
+/// bound (the other side of the distance, the largest over the surface: sampled at the vertices of `reference` and
+/// of the input, each quad taken as the four triangles of its two diagonals,
+/// `Planarization_result::max_distance_to_quads`), so that quads that shrink away from a
+/// border or cut a crease are not a success; and if no quad is folded that the input did
+/// not fold (folded: neither diagonal splits it into two triangles that face the side of
+/// the input quad's normal, the cross product of its diagonals).
+///
+/// <b>Borders and creases.</b> The vertices on the border of `qm` and on the creases of
+/// `reference` that `qm` follows slide along them only, in both methods below: their pull
+/// towards the surface is replaced by one towards the border polyline of the input (across the
+/// border, in the surface) or towards the creases (across them), and the corners of the
+/// border and of the creases stay where they were. Each may end at most `max_distance_to_surface`
+/// from them, as from the surface (`Planarization_result::max_distance`). A crease is an edge of `reference`
+/// whose faces' normals make an angle above `crease_angle` (40 degrees by default); `qm` follows it
+/// where a vertex lies on it (within 1% of the mean quad edge) with two of its quad edges along it
+/// (both ends on creases, the midpoint within a quarter of the edge's length); a vertex with one or
+/// more than two such edges, or on the border with one, is a corner, and so is a border vertex of
+/// degree other than 3, and a vertex where the border or the crease turns by more than `crease_angle`.
 ///
 /// <b>Energy</b> (after Liu et al. 2006): planarity, closeness to the reference and
 /// fairness, `sum_f |C (X_f - P_f)|^2 + wc sum_i |x_i - a_i|^2 + wf sum_j |D_j X - b_j|^2`:
@@ -104,10 +123,16 @@ struct Planarization_result
 /// (Levenberg-Marquardt) minimization starts again from the input, over the vertices and a
 /// unit normal `n_f` per quad, of
 /// `sum_f w_f sum_{edges ab of f} (n_f . (x_b - x_a))^2 + sum_f (|n_f|^2 - 1)^2`
-/// `+ sum_i c_i ((m_i . (x_i - s_i))^2 + t |x_i - s_i|^2) + g |D (X - X_0)|^2`, in units of the
+/// `+ sum_i c_i ((m_i . (x_i - s_i))^2 + t |x_i - s_i|^2) + g |D (X - X_0)|^2`
+/// `+ k sum_f sum_{corner triangles abc of f} max(0, s A0_abc - A_abc)^2`, in units of the
 /// mean quad edge, `s_i` the closest point of the reference and `m_i` the unit normal of the
 /// input quad mesh at vertex `i` (the sum of the cross products of the diagonals of its
-/// quads), so that vertices may slide along the surface (`t` = `g` = 1e-3). A step is
+/// quads), so that vertices may slide along the surface (`t` = `g` = 1e-3); on the border
+/// and the creases the closeness term holds the vertex across them (see above). The last term
+/// keeps the shape of the quads: `A_abc` is the signed area, against the normal of the input
+/// quad, of each of the four triangles (0,1,2), (0,2,3), (1,2,3), (1,3,0) of its corners, and
+/// `A0_abc` its input value (`k` = 1, `s` = 1/4); a dart or a bowtie is as planar as a square,
+/// and without it the steps turn quads into darts that every later step would fold. A step is
 /// kept only if this energy falls and it folds no quad that the input did not fold. After each kept step, `w_f` doubles on every quad
 /// above 0.8 times the threshold and `c_i` on every vertex farther than 0.8 times
 /// `max_distance_to_surface` (both start at 1 and stay below 1e4), until every quad is
@@ -175,6 +200,14 @@ struct Planarization_result
 ///     \cgalParamType{`double > 0`}
 ///     \cgalParamDefault{5% of the mean edge length of the input quad mesh (`Planarization_result::mean_edge_length`)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{crease_angle}
+///     \cgalParamDescription{the creases of `reference` that the vertices on them slide along: its edges whose
+///                           faces' normals make an angle above this, in degrees, 180 for none; also the turn of the
+///                           border or of a crease above which a vertex stays where it was (see <b>Borders and
+///                           creases</b>); given with `Polyvector_fields::parameters::crease_angle()`}
+///     \cgalParamType{`double` in `[0, 180]`}
+///     \cgalParamDefault{40}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the largest number of local-global iterations}
 ///     \cgalParamType{`std::size_t`}
@@ -208,7 +241,8 @@ struct Planarization_result
 ///          did not succeed either (or did not run), the outcome of the local-global iterations:
 ///          `DID_NOT_CONVERGE` when `number_of_iterations` iterations did not reach the threshold;
 ///          `TOO_FAR_FROM_SURFACE` when they reached it with a vertex farther than `max_distance_to_surface`
-///          from `reference`, or stopped before it with such a vertex and the pull towards the surface at its
+///          from `reference`, or with the surface farther from the quads than from the input quads by more
+///          than that (`Planarization_result::max_distance_to_quads`), or stopped before it with such a vertex and the pull towards the surface at its
 ///          floor (`Planarization_result::left_surface`; `Planarization_result::max_distance` tells how far);
 ///          `FOLDED_QUAD` when they reached it within the bound but folded a quad that the input did not fold
 ///          (`Planarization_result::folded_quads`). On failure `qm` is left as it was;
@@ -237,6 +271,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, P
   p.closeness_decay = choose_parameter(get_parameter(np, internal_np::closeness_decay), p.closeness_decay);
   p.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), p.max_iterations);
   p.gauss_newton_steps = choose_parameter(get_parameter(np, internal_np::gauss_newton_steps), p.gauss_newton_steps);
+  p.crease_angle = choose_parameter(get_parameter(np, internal_np::crease_angle), p.crease_angle);
   p.distance_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::max_distance_to_surface_t>::value;
   p.max_distance_to_surface = choose_parameter(get_parameter(np, internal_np::max_distance_to_surface), 0.0);
   const Solver solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver());

@@ -165,6 +165,36 @@ inline bool folded_face(Face f, const Mesh& m, const std::vector<Point>& input, 
   return (against(0, 1, 2) || against(0, 2, 3)) && (against(1, 2, 3) || against(1, 3, 0));
 }
 
+// The other side of the distance to the surface, by brute force: the largest
+// distance from a sample (a vertex of the reference, or an input point) to the
+// quads at the points `at`, each quad taken as the four triangles of its two
+// diagonals (the definition of planarize_quad_mesh()).
+inline double surface_to_quads(const Mesh& reference, const Mesh& m, const std::vector<Point>& input,
+                               const std::vector<Point>& at)
+{
+  std::vector<Kernel::Triangle_3> triangles;
+  for(Face f : faces(m))
+  {
+    std::vector<std::size_t> v;
+    for(auto w : CGAL::vertices_around_face(halfedge(f, m), m))
+      v.push_back(std::size_t(w));
+    for(std::size_t k = 0; k < 4; ++k)
+      triangles.emplace_back(at[v[k]], at[v[(k + 1) % 4]], at[v[(k + 2) % 4]]);
+  }
+  std::vector<Point> samples = input;
+  for(auto v : vertices(reference))
+    samples.push_back(reference.point(v));
+  double largest = 0;
+  for(const Point& p : samples)
+  {
+    double d2 = std::numeric_limits<double>::infinity();
+    for(const auto& t : triangles)
+      d2 = (std::min)(d2, CGAL::to_double(CGAL::squared_distance(p, t)));
+    largest = (std::max)(largest, std::sqrt(d2));
+  }
+  return largest;
+}
+
 inline void displace(Mesh& m, Byte_reader& in, double scale)
 {
   for(auto v : vertices(m))
@@ -256,8 +286,11 @@ PVF_FUZZ_TARGET(planarize)
                    (result.gauss_newton_ran && result.gauss_newton_steps >= 4 && code != Error_code::SUCCESS),
                  "stalled after " + std::to_string(result.gauss_newton_steps) + " Gauss-Newton steps with " +
                    code_name(code));
+  // too far: a vertex from the surface, or the surface from the quads
   if(code == Error_code::TOO_FAR_FROM_SURFACE)
-    PVF_FUZZ_CHECK(!(result.max_distance <= result.distance_bound), "TOO_FAR_FROM_SURFACE within distance_bound");
+    PVF_FUZZ_CHECK(!(result.max_distance <= result.distance_bound) ||
+                     !(result.max_distance_to_quads <= result.max_distance_to_quads_before + result.distance_bound),
+                   "TOO_FAR_FROM_SURFACE within distance_bound on both sides");
   if(code == Error_code::FOLDED_QUAD)
     PVF_FUZZ_CHECK(result.folded_quads > 0, "FOLDED_QUAD without a folded quad");
   if(code != Error_code::SUCCESS)
@@ -290,6 +323,16 @@ PVF_FUZZ_TARGET(planarize)
                      (result.gauss_newton_ran ? "ran" : "did not run") + ")");
   }
   const std::vector<Point> after = points_of(qm);
+  const double covered_before = surface_to_quads(reference, qm, before, before);
+  const double covered_after = surface_to_quads(reference, qm, before, after);
+  PVF_FUZZ_CHECK(covered_after <= covered_before + result.distance_bound * (1 + 1e-9) + 1e-9 * edge,
+                 "the surface " + number(covered_after) + " from the quads, " + number(covered_before) +
+                   " before, bound " + number(result.distance_bound));
+  PVF_FUZZ_CHECK(std::abs(result.max_distance_to_quads - covered_after) <= 1e-9 * edge &&
+                   std::abs(result.max_distance_to_quads_before - covered_before) <= 1e-9 * edge,
+                 "max_distance_to_quads " + number(result.max_distance_to_quads) + " (before " +
+                   number(result.max_distance_to_quads_before) + "), measured " + number(covered_after) + " (" +
+                   number(covered_before) + ")");
   for(Face f : faces(qm))
     PVF_FUZZ_CHECK(folded_face(f, qm, before, before) || !folded_face(f, qm, before, after),
                    "a quad folded by a successful planarization");

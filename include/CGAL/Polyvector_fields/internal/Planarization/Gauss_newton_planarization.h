@@ -19,6 +19,12 @@
 // input quad mesh at vertex i (the normalized sum of the cross products of the
 // diagonals of its quads), so that the vertices may slide along the surface,
 // D the second differences of the fairness term of the local-global method.
+// The vertices on the border of the input and on the creases of the
+// reference slide along them only, and their corners stay (Feature_closeness):
+// a border vertex adds c_i (b_i . (x_i - s_i))^2, b_i in the surface and
+// across the border, with s_i moved onto the border along b_i; a crease vertex
+// has c_i (|(I - t_i t_i^T)(x_i - s_i)|^2 + t |x_i - s_i|^2), s_i on the crease
+// and t_i along it; a corner has c_i |x_i - x0_i|^2.
 // Each step eliminates the normals quad by quad (3 x 3 blocks) and factors the
 // 3n x 3n system of the vertices, whose pattern is analyzed once; a step is
 // kept only if the energy (with the closest points of the new positions)
@@ -41,6 +47,7 @@
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
+#include <CGAL/Polyvector_fields/internal/Planarization/Surface_closeness.h>
 #include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 
@@ -68,6 +75,8 @@ struct Gauss_newton_constants
   static constexpr double reweighting_fraction = 0.8;
   static constexpr double largest_weight = 1e4;
   static constexpr int attempts_per_step = 12;
+  static constexpr double shape_weight = 1;       // k
+  static constexpr double shape_fraction = 0.25;  // s
   static constexpr int stall_steps = 3;
   static constexpr double stall_progress = 0.99;  // a measure below 0.99 of its mark lowers the mark
 };
@@ -150,16 +159,21 @@ struct Quad_folds
   }
 };
 
-// `closest(X, S, distance)` gives, for the rows of X (mesh units), the
-// closest points S and their distances. DtD: D^T D for the second differences
-// D of the fairness term.
+// `closest(X, S, distance, Dir)` gives, for the rows of X (mesh units), the
+// targets S of the closeness term (the closest points on the reference, and
+// for the vertices on feature curves Feature_closeness::targets()), the
+// distances to the reference, and the directions Dir of those targets (zero
+// otherwise); features: the feature curves' targets, the kind of each vertex
+// and the input's vertex normals. DtD: D^T D
+// for the second differences D of the fairness term.
 // X0: the input positions; folds: the folds of the quads at X0; edge: the
 // mean quad edge; bound: the distance bound (mesh units). On success X holds the result (mesh units).
 template <typename SolverTraits, typename Closest>
 void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std::array<std::size_t, 4> >& quads,
                                 const Quad_folds& folds, const Eigen::SparseMatrix<double>& DtD, double edge, double threshold,
                                 double bound, std::size_t max_steps, bool parallel, const SolverTraits& solver,
-                                Closest& closest, Eigen::MatrixXd& X, Gauss_newton_report& report)
+                                const Feature_closeness& features, Closest& closest, Eigen::MatrixXd& X,
+                                Gauss_newton_report& report)
 {
   typedef Gauss_newton_constants C;
   typedef Eigen::Matrix<double, 12, 12> Matrix12;
@@ -187,33 +201,19 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
   }
 
   // the normals of the input quad mesh at its vertices (fixed)
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(Eigen::Index(n), 3);
-  for(const auto& q : quads)
-  {
-    const Eigen::RowVector3d d1 = Y.row(Eigen::Index(q[2])) - Y.row(Eigen::Index(q[0]));
-    const Eigen::RowVector3d d2 = Y.row(Eigen::Index(q[3])) - Y.row(Eigen::Index(q[1]));
-    const Eigen::RowVector3d c = d1.cross(d2);
-    for(int k = 0; k < 4; ++k)
-      M.row(Eigen::Index(q[std::size_t(k)])) += c;
-  }
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const double length = M.row(Eigen::Index(i)).norm();
-    if(length > 0)
-      M.row(Eigen::Index(i)) /= length;
-  }
+  const Eigen::MatrixXd& M = features.normals();
 
   // closest points in units of the edge
-  Eigen::MatrixXd S;
+  Eigen::MatrixXd S, Dir;
   std::vector<double> distance;
-  auto closest_at = [&](const Eigen::MatrixXd& Yc, Eigen::MatrixXd& Sc, std::vector<double>& dc) {
+  auto closest_at = [&](const Eigen::MatrixXd& Yc, Eigen::MatrixXd& Sc, std::vector<double>& dc, Eigen::MatrixXd& Dirc) {
     const Eigen::MatrixXd Xc = Yc * edge;
-    closest(Xc, Sc, dc);
+    closest(Xc, Sc, dc, Dirc);
     Sc /= edge;
     for(double& d : dc)
       d /= edge;
   };
-  closest_at(Y, S, distance);
+  closest_at(Y, S, distance, Dir);
 
   // the pattern of the vertex system, and the slot of every entry a quad adds
   Eigen::SparseMatrix<double> A(N3, N3);
@@ -268,8 +268,48 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       }
 
   std::vector<double> w(F, 1.0), cw(n, 1.0);
+
+  // the shape term: the corner triangles, and their signed areas in the input
+  const int corner_triangles[4][3] = { { 0, 1, 2 }, { 0, 2, 3 }, { 1, 2, 3 }, { 1, 3, 0 } };
+  std::vector<Eigen::Vector3d> input_normal(F);
+  std::vector<std::array<double, 4> > input_area(F);
+  auto corner_area = [&](const Eigen::MatrixXd& Z, std::size_t f, int t) {
+    const auto& q = quads[f];
+    const Eigen::Vector3d a = Z.row(Eigen::Index(q[std::size_t(corner_triangles[t][0])])).transpose();
+    const Eigen::Vector3d b = Z.row(Eigen::Index(q[std::size_t(corner_triangles[t][1])])).transpose();
+    const Eigen::Vector3d c = Z.row(Eigen::Index(q[std::size_t(corner_triangles[t][2])])).transpose();
+    return (b - a).cross(c - a).dot(input_normal[f]);
+  };
+  for(std::size_t f = 0; f < F; ++f)
+  {
+    const double length = folds.normal[f].norm();
+    input_normal[f] = length > 0 ? Eigen::Vector3d(folds.normal[f] / length) : Eigen::Vector3d::Zero();
+    for(int t = 0; t < 4; ++t)
+      input_area[f][std::size_t(t)] = corner_area(Y0, f, t);
+  }
+  // the shortfall of a corner triangle below s times its input area (0 when none)
+  auto shortfall = [&](const Eigen::MatrixXd& Z, std::size_t f, int t) {
+    const double least = C::shape_fraction * input_area[f][std::size_t(t)];
+    return least > 0 ? (std::max)(0.0, least - corner_area(Z, f, t)) : 0.0;
+  };
+  // the closeness term of vertex i is c_i d^T H_i d, d = x_i - s_i, with
+  // H_i this matrix (Dir: the directions of Feature_closeness::targets())
+  auto closeness_matrix = [&](std::size_t i, const Eigen::MatrixXd& Dirc) -> Eigen::Matrix3d {
+    const Eigen::Vector3d d = Dirc.row(Eigen::Index(i)).transpose();  // zero but on BORDER and CREASE vertices
+    switch(features.kind()[i])
+    {
+      case Feature_closeness::CORNER: return Eigen::Matrix3d::Identity();
+      case Feature_closeness::CREASE:
+        return (1 + C::tangential_weight) * Eigen::Matrix3d::Identity() - d * d.transpose();
+      default:
+      {
+        const Eigen::Vector3d m = M.row(Eigen::Index(i)).transpose();
+        return m * m.transpose() + d * d.transpose() + C::tangential_weight * Eigen::Matrix3d::Identity();
+      }
+    }
+  };
   auto energy = [&](const Eigen::MatrixXd& Yc, const Eigen::MatrixXd& Nc, const Eigen::MatrixXd& Sc,
-                    const Eigen::MatrixXd& Mc) {
+                    const Eigen::MatrixXd& Dirc) {
     double e = 0;
     for(std::size_t f = 0; f < F; ++f)
     {
@@ -282,12 +322,16 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       }
       const double u = nf.squaredNorm() - 1;
       e += u * u;
+      for(int t = 0; t < 4; ++t)
+      {
+        const double s = shortfall(Yc, f, t);
+        e += C::shape_weight * s * s;
+      }
     }
     for(std::size_t i = 0; i < n; ++i)
     {
-      const Eigen::RowVector3d d = Yc.row(Eigen::Index(i)) - Sc.row(Eigen::Index(i));
-      const double c = Mc.row(Eigen::Index(i)).dot(d);
-      e += cw[i] * (c * c + C::tangential_weight * d.squaredNorm());
+      const Eigen::Vector3d d = (Yc.row(Eigen::Index(i)) - Sc.row(Eigen::Index(i))).transpose();
+      e += cw[i] * d.dot(closeness_matrix(i, Dirc) * d);
     }
     const Eigen::MatrixXd change = Yc - Y0;  // |D change|^2 = trace(change^T D^T D change)
     e += C::fairness_weight * (change.array() * (DtD * change).array()).sum();
@@ -301,7 +345,7 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
   double mx = 0, mean = 0;
   planarity_of_quads(Y, quads, planarity, mx, mean);
   auto largest = [](const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); };
-  double e_current = energy(Y, Nf, S, M);
+  double e_current = energy(Y, Nf, S, Dir);
   double lambda = C::first_lambda;
 
   std::vector<Eigen::Matrix3d> Hnn(F), Hinv(F);
@@ -322,8 +366,8 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       {
         const auto& q = quads[f];
         const Eigen::Vector3d nf = Nf.row(Eigen::Index(f)).transpose();
-        Eigen::Matrix<double, 5, 15> J = Eigen::Matrix<double, 5, 15>::Zero();
-        Eigen::Matrix<double, 5, 1> r;
+        Eigen::Matrix<double, 9, 15> J = Eigen::Matrix<double, 9, 15>::Zero();
+        Eigen::Matrix<double, 9, 1> r = Eigen::Matrix<double, 9, 1>::Zero();
         const double sw = std::sqrt(w[f]);
         for(int k = 0; k < 4; ++k)
         {
@@ -336,6 +380,26 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
         }
         r(4) = nf.squaredNorm() - 1;
         J.block<1, 3>(4, 0) = 2 * nf.transpose();
+        // the shape term, on the corner triangles below their floor: the
+        // gradient of n0 . ((b - a) x (c - a)) is (c - a) x n0 in b,
+        // n0 x (b - a) in c, and minus their sum in a
+        for(int t = 0; t < 4; ++t)
+        {
+          const double s = shortfall(Y, f, t);
+          if(s <= 0)
+            continue;
+          const int ia = corner_triangles[t][0], ib = corner_triangles[t][1], ic = corner_triangles[t][2];
+          const Eigen::Vector3d a = Y.row(Eigen::Index(q[std::size_t(ia)])).transpose();
+          const Eigen::Vector3d b = Y.row(Eigen::Index(q[std::size_t(ib)])).transpose();
+          const Eigen::Vector3d c = Y.row(Eigen::Index(q[std::size_t(ic)])).transpose();
+          const Eigen::Vector3d& m = input_normal[f];
+          const Eigen::Vector3d db = (c - a).cross(m), dc = m.cross(b - a), da = -(db + dc);
+          const double sk = std::sqrt(C::shape_weight);
+          r(5 + t) = sk * s;  // the residual falls as the area grows
+          J.block<1, 3>(5 + t, 3 + 3 * ia) = -sk * da.transpose();
+          J.block<1, 3>(5 + t, 3 + 3 * ib) = -sk * db.transpose();
+          J.block<1, 3>(5 + t, 3 + 3 * ic) = -sk * dc.transpose();
+        }
         const Eigen::Matrix<double, 15, 15> H = J.transpose() * J;
         const Eigen::Matrix<double, 15, 1> g = J.transpose() * r;
         Hnn[f] = H.block<3, 3>(0, 0);
@@ -373,12 +437,10 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
       }
       for(std::size_t i = 0; i < n; ++i)
       {
-        const Eigen::Vector3d m = M.row(Eigen::Index(i)).transpose();
         const Eigen::Vector3d d = (Y.row(Eigen::Index(i)) - S.row(Eigen::Index(i))).transpose();
-        const Eigen::Matrix3d h =
-          cw[i] * (m * m.transpose() + C::tangential_weight * Eigen::Matrix3d::Identity()) + lambda * Eigen::Matrix3d::Identity();
-        const Eigen::Vector3d g = cw[i] * (m * m.dot(d) + C::tangential_weight * d) +
-                                  fair_gradient.row(Eigen::Index(i)).transpose();
+        const Eigen::Matrix3d closeness = closeness_matrix(i, Dir);
+        const Eigen::Matrix3d h = cw[i] * closeness + lambda * Eigen::Matrix3d::Identity();
+        const Eigen::Vector3d g = cw[i] * (closeness * d) + fair_gradient.row(Eigen::Index(i)).transpose();
         for(int c = 0; c < 3; ++c)
         {
           rhs(Eigen::Index(3 * i + std::size_t(c)), 0) -= g(c);
@@ -409,16 +471,17 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
           dq.segment<3>(3 * a) = dv.block<3, 1>(Eigen::Index(3 * quads[f][std::size_t(a)]), 0);
         Nn.row(Eigen::Index(f)) -= (Hinv[f] * (gn[f] + Hnv[f] * dq)).transpose();
       }
-      Eigen::MatrixXd Sn;
+      Eigen::MatrixXd Sn, Dirn;
       std::vector<double> dn;
-      closest_at(Yn, Sn, dn);
-      const double e_new = energy(Yn, Nn, Sn, M);
+      closest_at(Yn, Sn, dn, Dirn);
+      const double e_new = energy(Yn, Nn, Sn, Dirn);
       // a step that folds a quad is rejected as one that does not lower the energy
       if(std::isfinite(e_new) && e_new < e_current && folds.new_folds(Yn, quads) == 0)
       {
         Y.swap(Yn);
         Nf.swap(Nn);
         S.swap(Sn);
+        Dir.swap(Dirn);
         distance.swap(dn);
         lambda = (std::max)(1e-7, lambda / 2);
         kept = true;
@@ -456,7 +519,7 @@ void gauss_newton_planarization(const Eigen::MatrixXd& X0, const std::vector<std
     for(std::size_t i = 0; i < n; ++i)
       if(distance[i] > C::reweighting_fraction * scaled_bound && cw[i] < C::largest_weight)
         cw[i] *= 2;
-    e_current = energy(Y, Nf, S, M);
+    e_current = energy(Y, Nf, S, Dir);
   }
   X = report.steps == 0 ? X0 : Eigen::MatrixXd(Y * edge);
   // The outcome is measured again on the points returned: scaling back rounds

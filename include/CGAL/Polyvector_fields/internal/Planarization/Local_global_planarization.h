@@ -14,7 +14,8 @@
 // - the local step: P_f, the four vertices of quad f projected onto their
 //   best-fit plane; C centres them;
 // - closeness: a_i = x_i + beta (s_i - x_i), s_i the closest point of the
-//   reference surface (an AABB tree);
+//   reference surface (an AABB tree), or on the border or a crease for the
+//   vertices on them (Feature_closeness, Surface_closeness.h);
 // - fairness: D_j, the second differences of the polylines through the
 //   interior vertices of valence 4 and along the straight runs of the border,
 //   with b_j = (1 - beta) D_j X.
@@ -22,7 +23,8 @@
 // the solver's Sparse_factorization (real symmetric positive definite), and
 // every iteration solves for the three coordinates at once. Once beta is at
 // its floor, a vertex farther than the distance bound ends the iterations
-// (TOO_FAR_FROM_SURFACE): nothing pulls it back any more.
+// (TOO_FAR_FROM_SURFACE): nothing pulls it back any more. A result is also
+// checked on the other side of the distance (Surface_coverage).
 
 #include <CGAL/Polyvector_fields/Error_code.h>
 #include <CGAL/Polyvector_fields/Sparse_factorization.h>
@@ -31,10 +33,7 @@
 #include <CGAL/Polyvector_fields/internal/parallel.h>
 #include <CGAL/Polyvector_fields/quad_planarity.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Kernel_traits.h>
+#include <CGAL/Polyvector_fields/internal/Planarization/Surface_closeness.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <Eigen/Dense>
@@ -44,7 +43,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -71,6 +72,11 @@ struct Planarization_parameters
   // input quad mesh.
   bool distance_given = false;
   double max_distance_to_surface = 0;
+  // The creases of the reference that the vertices on them follow
+  // (Feature_closeness): edges whose faces' normals make an angle above this,
+  // in degrees (the CLI's default crease angle); 180: none. Also the turn of
+  // the border or of a crease above which a vertex is a corner.
+  double crease_angle = 40;
 };
 
 // The default of max_distance_to_surface, as a fraction of the mean quad edge length.
@@ -82,10 +88,11 @@ constexpr double closeness_floor = 1e-3;
 inline Error_code check_planarization_parameters(const Planarization_parameters& p)
 {
   if(!std::isfinite(p.threshold) || !std::isfinite(p.closeness_weight) || !std::isfinite(p.fairness_weight) ||
-     !std::isfinite(p.closeness_decay) || !std::isfinite(p.max_distance_to_surface))
+     !std::isfinite(p.closeness_decay) || !std::isfinite(p.max_distance_to_surface) || !std::isfinite(p.crease_angle))
     return Error_code::NON_FINITE_VALUE;
   if(!(p.threshold > 0) || !(p.closeness_weight > 0) || p.fairness_weight < 0 || !(p.closeness_decay > 0) ||
-     p.closeness_decay > 1 || (p.distance_given && !(p.max_distance_to_surface > 0)))
+     p.closeness_decay > 1 || (p.distance_given && !(p.max_distance_to_surface > 0)) || p.crease_angle < 0 ||
+     p.crease_angle > 180)
     return Error_code::INVALID_PARAMETER;
   return Error_code::SUCCESS;
 }
@@ -152,6 +159,39 @@ struct Quad_mesh_arrays
     planarity_of_quads(Y, quads, each, mx, mean);
   }
 
+  // The border of the quad mesh: the kind of each vertex (Feature_closeness:
+  // a border vertex of degree 3 between two border edges is BORDER, any other
+  // a CORNER), the border edges, and all edges.
+  std::vector<char> border(const PolygonMesh& qm, std::vector<std::array<std::size_t, 2> >& border_edges,
+                           std::vector<std::array<std::size_t, 2> >& all_edges) const
+  {
+    std::vector<char> kind(descriptors.size(), Feature_closeness::INTERIOR);
+    for(std::size_t i = 0; i < descriptors.size(); ++i)
+    {
+      const vertex_descriptor v = descriptors[i];
+      if(!CGAL::is_border(v, qm))
+        continue;
+      std::size_t degree = 0, border_degree = 0;
+      for(auto h : halfedges_around_target(halfedge(v, qm), qm))
+      {
+        ++degree;
+        if(CGAL::is_border_edge(h, qm))
+          ++border_degree;
+      }
+      kind[i] = degree == 3 && border_degree == 2 ? Feature_closeness::BORDER : Feature_closeness::CORNER;
+    }
+    border_edges.clear();
+    all_edges.clear();
+    for(auto e : edges(qm))
+    {
+      const std::array<std::size_t, 2> ends = { index(source(halfedge(e, qm), qm)), index(target(halfedge(e, qm), qm)) };
+      all_edges.push_back(ends);
+      if(CGAL::is_border(e, qm))
+        border_edges.push_back(ends);
+    }
+    return kind;
+  }
+
   // The second differences x_a - 2 x_i + x_b of the fairness term: the two
   // polylines through an interior vertex of valence 4, and the border through
   // a border vertex of degree 3 (a straight run, not a staircase corner).
@@ -181,83 +221,6 @@ struct Quad_mesh_arrays
     }
     return rows;
   }
-};
-
-// Closest points on a triangle mesh, each query hinted by the previous answer
-// for the same vertex (the vertices move little per iteration).
-template <typename TriangleMesh, typename ReferencePointMap>
-class Closest_points
-{
-  typedef typename boost::property_traits<ReferencePointMap>::value_type Ref_point;
-  typedef typename CGAL::Kernel_traits<Ref_point>::Kernel K;
-  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, ReferencePointMap> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-
-public:
-  Closest_points(const TriangleMesh& reference, ReferencePointMap rpm)
-    : m_tree(faces(reference).first, faces(reference).second, reference, rpm)
-  {
-    m_tree.accelerate_distance_queries();
-  }
-
-  // For the Gauss-Newton method: the closest points S of the rows of Y and
-  // their distances, each query hinted by the previous answer of this method
-  // for the same row (the first ones by the tree's own search).
-  void hinted_by_own(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, std::vector<double>& distance, bool parallel)
-  {
-    const bool hinted = m_own_hints.rows() == Y.rows();
-    if(!hinted)
-      m_own_hints.resize(Y.rows(), 3);
-    query(Y, hinted, m_own_hints, distance, parallel);
-    S = m_own_hints;
-  }
-
-  // S receives the closest points of the rows of Y; mx and mean the largest
-  // and the mean distance.
-  // The queries are independent (the tree is only read): with `parallel`,
-  // the cores share them; the distances are summed in order afterwards.
-  void operator()(const Eigen::MatrixXd& Y, Eigen::MatrixXd& S, double& mx, double& mean, bool parallel)
-  {
-    if(!m_have_hint)
-      S.resize(Y.rows(), 3);
-    query(Y, m_have_hint, S, m_distance, parallel);
-    mx = 0;
-    double sum = 0;
-    for(double d : m_distance)
-    {
-      mx = (std::max)(mx, d);
-      sum += d;
-    }
-    mean = sum / double(Y.rows());
-    m_have_hint = true;
-  }
-
-private:
-  // The closest points of the rows of Y into S, hinted by the rows of S
-  // when `hinted`, and their distances.
-  void query(const Eigen::MatrixXd& Y, bool hinted, Eigen::MatrixXd& S, std::vector<double>& distance, bool parallel) const
-  {
-    const std::size_t n = std::size_t(Y.rows());
-    distance.resize(n);
-    for_each_range(parallel, n, 1024, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const Eigen::Index r = Eigen::Index(i);
-        const typename K::Point_3 q(Y(r, 0), Y(r, 1), Y(r, 2));
-        const typename K::Point_3 s = hinted ? m_tree.closest_point(q, typename K::Point_3(S(r, 0), S(r, 1), S(r, 2)))
-                                             : m_tree.closest_point(q);
-        S(r, 0) = CGAL::to_double(s.x());
-        S(r, 1) = CGAL::to_double(s.y());
-        S(r, 2) = CGAL::to_double(s.z());
-        distance[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, s)));
-      }
-    });
-  }
-
-  Tree m_tree;
-  bool m_have_hint = false;
-  std::vector<double> m_distance;
-  Eigen::MatrixXd m_own_hints;
 };
 
 // The fixed matrix C^T C + wc I + wf D^T D; DtD receives D^T D.
@@ -340,12 +303,32 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
 
   Timer t;
   Closest_points<TriangleMesh, ReferencePointMap> closest(reference, rpm);
+  std::vector<std::array<std::size_t, 2> > border_edges, all_edges;
+  std::vector<char> border_kind = mesh.border(qm, border_edges, all_edges);
+  const Feature_closeness features(X, mesh.quads, std::move(border_kind), border_edges, all_edges,
+                                   p.crease_angle < 180 ? reference_creases(reference, rpm, p.crease_angle)
+                                                        : std::vector<CGAL::Simple_cartesian<double>::Segment_3>(),
+                                   result.mean_edge_length, p.crease_angle);
   result.time_tree = t.elapsed();
-  Eigen::MatrixXd S;
+  // S: the closest points on the reference (also the hints of the next
+  // queries); target: the closeness targets (Feature_closeness::targets()
+  // on the feature curves)
+  Eigen::MatrixXd S, target, direction;
+  std::vector<double> distance;  // of each vertex, to the surface and its feature (Feature_closeness::targets())
   double dmax, dmean;
   auto closest_points = [&]() {
     const Timer t0;
-    closest(X, S, dmax, dmean, p.parallel);
+    closest(X, S, distance, p.parallel);
+    target = S;
+    features.targets(X, target, direction, distance);
+    dmax = 0;
+    double sum = 0;
+    for(double d : distance)
+    {
+      dmax = (std::max)(dmax, d);
+      sum += d;
+    }
+    dmean = sum / double(n);
     result.time_closest += t0.elapsed();
   };
   mesh.planarity(X, result.max_planarity_before, result.mean_planarity_before);
@@ -387,7 +370,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
     ++it;
     // closeness (proximal, pulled by beta) and fairness (relaxed by beta)
     t = Timer();
-    rhs += wc * (X + beta * (S - X));
+    rhs += wc * (X + beta * (target - X));
     if(wf > 0)
       rhs += wf * (1 - beta) * (DtD * X);
     Eigen::MatrixXd Xn;
@@ -408,6 +391,22 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
   result.converged = mx <= p.threshold;
   const Quad_folds folds(X0, mesh.quads);  // the quads the input folds, for both methods
+  // the surface's distance to the quads, measured once a result needs it
+  std::optional<Surface_coverage> coverage;
+  auto coverage_bound = [&]() {
+    if(!coverage)
+    {
+      coverage.emplace(reference, rpm, X0, mesh.quads, p.parallel);
+      result.max_distance_to_quads_before = coverage->input();
+    }
+    return coverage->input() + result.distance_bound;
+  };
+  // whether the quads at Y cover the surface; `measure` receives the surface's distance to them
+  auto covers = [&](const Eigen::MatrixXd& Y, double& measure) {
+    const double bound = coverage_bound();
+    measure = coverage->largest_distance(Y);
+    return measure <= bound;
+  };
   Error_code code = Error_code::SUCCESS;
   if(result.left_surface)
     code = Error_code::TOO_FAR_FROM_SURFACE;
@@ -417,6 +416,9 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
   // leaving the surface are not a success.
   else if(!(dmax <= result.distance_bound))
     code = Error_code::TOO_FAR_FROM_SURFACE;
+  // nor planar faces that no longer cover the surface
+  else if(!covers(X, result.max_distance_to_quads))
+    code = Error_code::TOO_FAR_FROM_SURFACE;
   // nor are planar faces bought by folding a quad
   else if((result.folded_quads = folds.new_folds(X, mesh.quads)) > 0)
     code = Error_code::FOLDED_QUAD;
@@ -425,12 +427,14 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
     // The second method, from the input: on success its result replaces the
     // local-global one; otherwise the local-global failure is reported.
     Eigen::MatrixXd Xg;
-    auto closest_points_of = [&](const Eigen::MatrixXd& Y, Eigen::MatrixXd& S_, std::vector<double>& d_) {
+    auto closest_points_of = [&](const Eigen::MatrixXd& Y, Eigen::MatrixXd& S_, std::vector<double>& d_,
+                                 Eigen::MatrixXd& D_) {
       closest.hinted_by_own(Y, S_, d_, p.parallel);
+      features.targets(Y, S_, D_, d_);
     };
     Gauss_newton_report g;
     gauss_newton_planarization(X0, mesh.quads, folds, DtD, result.mean_edge_length, p.threshold, result.distance_bound,
-                               p.gauss_newton_steps, p.parallel, solver, closest_points_of, Xg, g);
+                               p.gauss_newton_steps, p.parallel, solver, features, closest_points_of, Xg, g);
     result.gauss_newton_ran = true;
     result.gauss_newton_steps = g.steps;
     result.gauss_newton_rejected_steps = g.rejected;
@@ -438,6 +442,8 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
     result.gauss_newton_max_planarity = g.max_planarity;
     result.gauss_newton_max_distance = g.max_distance;
     result.time_gauss_newton = g.time;
+    if(g.succeeded)
+      g.succeeded = covers(Xg, result.gauss_newton_max_distance_to_quads);
     if(g.succeeded)
     {
       X = Xg;
@@ -448,6 +454,7 @@ Error_code planarize_quad_mesh(PolygonMesh& qm, const TriangleMesh& reference, V
       result.mean_distance = g.mean_distance;
       result.max_displacement = (X - X0).rowwise().norm().maxCoeff();
       result.folded_quads = g.folded_quads;
+      result.max_distance_to_quads = result.gauss_newton_max_distance_to_quads;
       code = Error_code::SUCCESS;
     }
   }

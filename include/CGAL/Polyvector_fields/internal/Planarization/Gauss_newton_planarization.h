@@ -162,7 +162,8 @@ struct Quad_folds
 // `closest(X, S, distance, Dir)` gives, for the rows of X (mesh units), the
 // targets S of the closeness term (the closest points on the reference, and
 // for the vertices on feature curves Feature_closeness::targets()), the
-// distances to the reference, and the directions Dir of those targets (zero
+// distances to the reference (for those vertices, to their feature too), and
+// the directions Dir of those targets (zero
 // otherwise); features: the feature curves' targets, the kind of each vertex
 // and the input's vertex normals. DtD: D^T D
 // for the second differences D of the fairness term.

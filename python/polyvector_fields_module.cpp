@@ -1337,9 +1337,10 @@ py::tuple quad_planarity(py::handle Vq, py::handle Fq)
 
 py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py::handle threshold_arg,
                     py::handle max_distance_to_surface, py::handle number_of_iterations,
-                    py::handle gauss_newton_steps_arg)
+                    py::handle gauss_newton_steps_arg, py::handle crease_angle_arg)
 {
   const double threshold = read_real_number(threshold_arg, "threshold");
+  const double crease_angle = read_real_number(crease_angle_arg, "crease_angle");
   const Mesh_arrays q = read_mesh_arrays(Vq, Fq, 4, "Vq", "Fq");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const std::optional<double> distance = read_number(max_distance_to_surface, "max_distance_to_surface");
@@ -1360,7 +1361,8 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
     build_mesh(a, tm);
     namespace P = PVF::parameters;
     const auto np =
-      P::gauss_newton_steps(gauss_newton_steps, P::planarity_threshold(threshold).number_of_iterations(iterations));
+      P::gauss_newton_steps(gauss_newton_steps, P::crease_angle(crease_angle, P::planarity_threshold(threshold)
+                                                                               .number_of_iterations(iterations)));
     // without a distance, the function's default bound (5% of the mean quad edge)
     if(distance)
       code = PVF::planarize_quad_mesh(qm, tm, r, P::max_distance_to_surface(*distance, np));
@@ -1595,5 +1597,5 @@ PYBIND11_MODULE(_core, m)
   m.def("quad_planarity", &quad_planarity, "Vq"_a, "Fq"_a);
   m.def("planarize", &planarize, "Vq"_a, "Fq"_a, "V"_a, "F"_a, "threshold"_a = 0.01,
         "max_distance_to_surface"_a = py::none(), "number_of_iterations"_a = py::none(),
-        "gauss_newton_steps"_a = py::none());
+        "gauss_newton_steps"_a = py::none(), "crease_angle"_a = 40.0);
 }

@@ -341,7 +341,7 @@ def quad_planarity(Vq, Fq):
 
 
 def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number_of_iterations=None,
-              gauss_newton_steps=None):
+              gauss_newton_steps=None, crease_angle=40.0):
     """Moves the quad vertices until every quad is planar to ``threshold``, staying near the surface (V, F).
 
     Local-global iterations (best-fit planes, then one sparse solve with
@@ -359,7 +359,10 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
     from the input quads (``info["max_distance_to_quads"]`` and
     ``info["max_distance_to_quads_before"]``: quads that shrink away from a
     border or cut a crease are not a success); vertices on the border and on
-    the surface's creases slide along them only. No quad may be folded that
+    the surface's creases (its edges whose faces' normals make an angle above
+    ``crease_angle`` degrees, 0 to 180, 180 for none) slide along them only,
+    and where the border or a crease turns by more than ``crease_angle`` or
+    creases meet, the vertex stays. No quad may be folded that
     was not (neither diagonal splitting it into two triangles that face the
     side of its input normal).
     When the threshold is not reached (``info["status"]`` is
@@ -372,7 +375,8 @@ def planarize(Vq, Fq, V, F, threshold=0.01, max_distance_to_surface=None, number
 
     Returns ``Vq2`` (the moved vertices; ``Fq`` is unchanged) and ``info``.
     """
-    return _core.planarize(Vq, Fq, V, F, threshold, max_distance_to_surface, number_of_iterations, gauss_newton_steps)
+    return _core.planarize(Vq, Fq, V, F, threshold, max_distance_to_surface, number_of_iterations, gauss_newton_steps,
+                           crease_angle)
 
 
 def _area_and_mean_edge(V, F):
@@ -429,7 +433,8 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
        and cannot be combined with ``planarize``);
     7. with ``planarize`` (True for the paper's 1%, or a threshold),
        :func:`planarize`, each vertex kept within ``max_surface_distance``
-       mean quad edges of the surface (``gauss_newton_steps`` passed on);
+       mean quad edges of the surface (``gauss_newton_steps`` passed on, and
+       ``sharp_edges`` as its ``crease_angle``);
        then the planarity. A planarization
        that does not reach the threshold leaves the quads as extracted
        (``info["planarization"]["status"]`` says why), as in the program.
@@ -525,7 +530,8 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
         mean_quad_edge = np.linalg.norm(Vq[edges[:, 0]] - Vq[edges[:, 1]], axis=1).mean()
         Vq, planarization_info = globals()["planarize"](Vq, Fq, V2, F2, threshold=threshold,
                                                         max_distance_to_surface=max_surface_distance * mean_quad_edge,
-                                                        gauss_newton_steps=gauss_newton_steps)
+                                                        gauss_newton_steps=gauss_newton_steps,
+                                                        crease_angle=crease)
     # the planarity of the quads (with keep_trimmed_boundary, of the faces with 4 corners)
     quad_rows = Fq[(Fq[:, :4] >= 0).all(axis=1) & ((Fq[:, 4:] < 0).all(axis=1))][:, :4]
     _, planarity = quad_planarity(Vq, quad_rows)

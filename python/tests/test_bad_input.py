@@ -123,6 +123,9 @@ CASES = [
      (V, np.array([[0, 1, 3, 2]]), V, F), {"gauss_newton_steps": -1}),
     ("INVALID_PARAMETER", "gauss_newton_steps: expected an integer, got 2.5", pvf.planarize,
      (V, np.array([[0, 1, 3, 2]]), V, F), {"gauss_newton_steps": 2.5}),
+    ("INVALID_PARAMETER", "planarize", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F), {"crease_angle": 181.0}),
+    ("INVALID_PARAMETER", "crease_angle: expected a number", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F),
+     {"crease_angle": "sharp"}),
     # files
     ("CANNOT_OPEN_FILE", "mesh '/nonexistent/m.off'", pvf.read_triangle_mesh, ("/nonexistent/m.off",), {}),
     ("BAD_ARRAY", "save_mesh: '", pvf.save_mesh, ("x.ply", V, F), {}),

@@ -101,3 +101,38 @@ def test_planarize_gauss_newton_steps_bound_the_second_method():
                 or info["gauss_newton_max_distance_to_quads"]
                 > info["max_distance_to_quads_before"] + info["distance_bound"])
         assert np.array_equal(Vp, Vq)
+
+
+def test_planarize_crease_angle_holds_the_vertices_of_the_creases():
+    # A 4 x 4 grid on the ridge z = |x| + 0.15 x y: the crease x = 0 (a
+    # dihedral angle of 90 degrees) runs along quad edges, and the twist makes
+    # every quad non-planar. With crease_angle=40 the crease is found and its
+    # vertices slide along it only: the quads become planar and still cover
+    # the surface. With 180 (no crease) they are free and slide off it, the
+    # quads cut the crease, and the result is refused: the quads come back as
+    # given.
+    n = 4
+    grid = [(2.0 * i / n - 1, 2.0 * j / n - 1) for i in range(n + 1) for j in range(n + 1)]
+    V = np.array([(x, y, abs(x) + 0.15 * x * y) for x, y in grid])
+    idx = lambda i, j: i * (n + 1) + j
+    Fq = np.array([(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)) for i in range(n) for j in range(n)])
+    F = np.array([t for i in range(n) for j in range(n)
+                  for t in ((idx(i, j), idx(i + 1, j), idx(i + 1, j + 1)), (idx(i, j), idx(i + 1, j + 1), idx(i, j + 1)))])
+    _, before = pvf.quad_planarity(V, Fq)
+    assert before["max"] > 0.01
+
+    Vp, info = pvf.planarize(V, Fq, V, F, crease_angle=40.0)
+    assert info["status"] == "SUCCESS"
+    _, after = pvf.quad_planarity(Vp, Fq)
+    assert after["max"] <= 0.01
+    bound = info["distance_bound"]
+    crease = V[:, 0] == 0
+    assert crease.sum() == 5
+    # the distance of each crease vertex to the line x = z = 0
+    assert np.hypot(Vp[crease, 0], Vp[crease, 2]).max() <= bound
+    assert info["max_distance_to_quads"] <= info["max_distance_to_quads_before"] + bound
+
+    Vp, info = pvf.planarize(V, Fq, V, F, crease_angle=180.0)
+    assert info["status"] == "TOO_FAR_FROM_SURFACE"
+    assert info["gauss_newton_max_distance_to_quads"] > info["max_distance_to_quads_before"] + bound
+    assert np.array_equal(Vp, V)

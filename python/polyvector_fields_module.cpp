@@ -1373,7 +1373,13 @@ py::tuple planarize(py::handle Vq, py::handle Fq, py::handle V, py::handle F, py
     // command-line program does the same).
     if(code != PVF::Error_code::DID_NOT_CONVERGE && code != PVF::Error_code::TOO_FAR_FROM_SURFACE &&
        code != PVF::Error_code::FOLDED_QUAD)
-      check(code, "planarize", "threshold " + std::to_string(threshold));
+    {
+      // the parameters given, so that an INVALID_PARAMETER can be read against them
+      std::string given = "threshold " + std::to_string(threshold) + ", crease_angle " + std::to_string(crease_angle);
+      if(distance)
+        given += ", max_distance_to_surface " + std::to_string(*distance);
+      check(code, "planarize", given);
+    }
     if(code == PVF::Error_code::SUCCESS)
       for(Vertex v : vertices(qm))
       {

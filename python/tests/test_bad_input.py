@@ -118,12 +118,13 @@ CASES = [
     # quads
     ("BAD_ARRAY", "Fq: expected shape (n, 4), got (2, 3)", pvf.quad_planarity, (V, F), {}),
     ("BAD_ARRAY", "Fq[0, 3] = 9 is not a vertex of Vq", pvf.planarize, (V, np.array([[0, 1, 3, 9]]), V, F), {}),
-    ("INVALID_PARAMETER", "planarize", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F), {"threshold": -1.0}),
+    ("INVALID_PARAMETER", "threshold -1", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F), {"threshold": -1.0}),
     ("INVALID_PARAMETER", "gauss_newton_steps: -1 is not in 0..1000000", pvf.planarize,
      (V, np.array([[0, 1, 3, 2]]), V, F), {"gauss_newton_steps": -1}),
     ("INVALID_PARAMETER", "gauss_newton_steps: expected an integer, got 2.5", pvf.planarize,
      (V, np.array([[0, 1, 3, 2]]), V, F), {"gauss_newton_steps": 2.5}),
-    ("INVALID_PARAMETER", "planarize", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F), {"crease_angle": 181.0}),
+    ("INVALID_PARAMETER", "crease_angle 181", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F),
+     {"crease_angle": 181.0}),
     ("INVALID_PARAMETER", "crease_angle: expected a number", pvf.planarize, (V, np.array([[0, 1, 3, 2]]), V, F),
      {"crease_angle": "sharp"}),
     # files

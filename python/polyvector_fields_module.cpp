@@ -1232,9 +1232,19 @@ py::tuple integer_grid_map(py::handle V, py::handle F, py::handle X, py::handle 
 }
 
 py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, py::handle seam_transitions,
-                    py::handle keep_trimmed_boundary)
+                    py::handle keep_trimmed_boundary, py::handle split_components, py::handle max_input_distance_arg)
 {
   const bool trimmed = read_flag(keep_trimmed_boundary, "keep_trimmed_boundary");
+  const bool split = read_flag(split_components, "split_components");
+  double max_input_distance = 0;
+  if(!max_input_distance_arg.is_none())
+  {
+    max_input_distance = read_real_number(max_input_distance_arg, "max_input_distance");
+    if(!(max_input_distance > 0) || !std::isfinite(max_input_distance))
+      throw Failure("quad_mesh: max_input_distance must be a positive distance, got " +
+                      std::to_string(max_input_distance) + " (INVALID_PARAMETER)",
+                    "INVALID_PARAMETER");
+  }
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const Matrix_d UVm = read_real(UV, "UV", 2);
   const Matrix_i FUVm = read_integer(FUV, "FUV", 3);
@@ -1282,7 +1292,9 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
       }
     });
     Mesh qm;
-    const auto np = PVF::parameters::keep_trimmed_boundary(trimmed);
+    const auto np = PVF::parameters::keep_trimmed_boundary(
+      trimmed, PVF::parameters::split_components_without_cells(
+                 split, PVF::parameters::max_input_distance(max_input_distance)));
     code = T ? PVF::extract_quad_mesh(bundle, uv, map, qm, r, np) : PVF::extract_quad_mesh(tm, uv, qm, r, np);
     if(code == PVF::Error_code::SUCCESS)
     {
@@ -1310,6 +1322,11 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
   info["unfolded_quads"] = r.unfolded_quads;
   info["discarded_cells"] = r.discarded_cells;
   info["trimmed_polygons"] = r.trimmed_polygons;
+  info["largest_input_distance"] = r.largest_input_distance;
+  info["split_components"] = r.split_components;
+  info["split_small_components"] = r.split_small_components;
+  info["split_far_components"] = r.split_far_components;
+  info["split_defective_components"] = r.split_defective_components;
   info["time_total"] = r.time_total;
   return py::make_tuple(to_numpy(q.V, q.V.size() / 3, 3), to_numpy(q.F, q.F.size() / q.width, q.width), info);
 }
@@ -1599,7 +1616,7 @@ PYBIND11_MODULE(_core, m)
         "quads"_a = py::none(), "features"_a = py::none(), "boundary_alignment"_a = false,
         "singularity_cancellation_distance"_a = py::none(), "stiffening_keeps_integers"_a = true);
   m.def("quad_mesh", &quad_mesh, "V"_a, "F"_a, "UV"_a, "FUV"_a, "seam_transitions"_a = py::none(),
-        "keep_trimmed_boundary"_a = false);
+        "keep_trimmed_boundary"_a = false, "split_components"_a = false, "max_input_distance"_a = py::none());
   m.def("quad_planarity", &quad_planarity, "Vq"_a, "Fq"_a);
   m.def("planarize", &planarize, "Vq"_a, "Fq"_a, "V"_a, "F"_a, "threshold"_a = 0.01,
         "max_distance_to_surface"_a = py::none(), "number_of_iterations"_a = py::none(),

@@ -307,7 +307,8 @@ def integer_grid_map(V, F, X, edge_length=None, quads=None, features=None, bound
                                   singularity_cancellation_distance, stiffening_keeps_integers)
 
 
-def quad_mesh(V, F, UV, FUV, seam_transitions=None, keep_trimmed_boundary=False):
+def quad_mesh(V, F, UV, FUV, seam_transitions=None, keep_trimmed_boundary=False, split_components=False,
+              max_input_distance=None):
     """Extracts the quad mesh of a map's integer iso-lines (after QEx, Ebke et al. 2013).
 
     One vertex per integer point of the map, one edge per iso-line segment
@@ -321,14 +322,27 @@ def quad_mesh(V, F, UV, FUV, seam_transitions=None, keep_trimmed_boundary=False)
     are kept too, as polygons bounded by the iso-lines and the border (a free
     border: the result covers the whole surface).
 
+    ``split_components``: a connected component whose fold-overs cannot be
+    filled, that has no whole cell (smaller than a quad), or whose quads are
+    not one quad mesh of it, gets its triangles split into quads (three per
+    triangle, through their centroids and edge midpoints), instead of the
+    call failing. ``max_input_distance`` (a distance in the units of ``V``):
+    a component with an input vertex or face centroid farther than this from
+    its quads gets its triangles split into quads too.
+
     Returns ``Vq`` (#Vq, 3), ``Fq`` and ``info`` (quads, irregular vertices,
-    repairs, ``trimmed_polygons``). ``Fq`` is (#Q, 4); with
+    repairs, ``trimmed_polygons``, ``largest_input_distance``: the largest
+    distance of an input vertex or face centroid to the quads, and the
+    components split into quads: ``split_components``, of which
+    ``split_small_components``, ``split_far_components`` and
+    ``split_defective_components``, the others for their fold-overs). ``Fq`` is (#Q, 4); with
     ``keep_trimmed_boundary`` it is (#Q, k), k the largest number of corners of
     a face, and the rows of smaller faces end with -1. :func:`save_mesh`,
     :func:`write_html_viewer` and :func:`write_quad_mesh_ply` take such rows;
     :func:`quad_planarity` and :func:`planarize` take quads only.
     """
-    return _core.quad_mesh(V, F, UV, FUV, seam_transitions, keep_trimmed_boundary)
+    return _core.quad_mesh(V, F, UV, FUV, seam_transitions, keep_trimmed_boundary, split_components,
+                           max_input_distance)
 
 
 def quad_planarity(Vq, Fq):
@@ -404,7 +418,7 @@ def _merge_constraints(rows, width):
 
 def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_alignment=True, conjugate=False,
                 planarize=False, b=None, bc=None, curvature_constraints=None, singularity_separation=1.0,
-                max_surface_distance=0.05, keep_trimmed_boundary=False, gauss_newton_steps=None):
+                max_surface_distance=0.05, keep_trimmed_boundary=False, gauss_newton_steps=None, max_deviation=None):
     """Remeshes a triangle mesh into quads: the whole road, from the surface to a (planar-)quad mesh.
 
     The stages are those of the command-line program ``design_polyvector_field
@@ -413,6 +427,17 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
 
     1. the quad size h: ``edge_length``, or sqrt(area / ``quads``), or by default
        the mean edge length, but at most sqrt(area / 1000) (at least about 1000 quads);
+       the default is then made finer, by sqrt(2) up to 4 times, as the program makes
+       it (stages 2 to 6 again at each size): on a mesh of one component, where a
+       quad would stay folded or a component split into quads on its triangles
+       because its fold-overs cannot be filled (stage 6); and while an input
+       vertex or face centroid is farther from the quads than ``max_deviation``
+       bounding-box diagonals (default 0.009 with the default size; with
+       ``edge_length`` or ``quads``, no bound unless given), until a size comes
+       no closer, by a tenth, than every size before (one such size ends the
+       search, two in a row on a mesh of one component). At the last size, the
+       components still farther than the bound get their triangles split into
+       quads (:func:`quad_mesh`'s ``max_input_distance``);
     2. the feature edges (:func:`sharp_edges`: dihedral angle above
        ``sharp_edges`` degrees, None for none; the border with
        ``boundary_alignment``), creases shorter than 3h dropped, and the mesh
@@ -424,7 +449,9 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
        ``curvature_constraints`` passed on): conjugate for planar quads (Section 4.3);
     5. the integer-grid map (:func:`integer_grid_map`, features on integer
        iso-lines, singularities closer than ``singularity_separation`` quads cancelled);
-    6. the quad mesh (:func:`quad_mesh`, with the map's exact transitions); when
+    6. the quad mesh (:func:`quad_mesh`, with the map's exact transitions,
+       components that it cannot follow split into quads on their triangles,
+       ``split_components=True``, as in the program); when
        it reports ``UNREPAIRABLE_FOLD_OVER`` on a map without flipped
        triangles, the map is computed again with ``stiffening_keeps_integers=False``
        and the quads extracted from it; ``keep_trimmed_boundary`` is passed
@@ -451,10 +478,17 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
     Returns
     -------
     Vq, Fq : the quad mesh.
-    info : dict: ``quad_size``, the stages' dicts (``field``, ``map``,
-        ``quads``, ``planarization``), ``planarity`` (max, mean),
+    info : dict: ``quad_size`` (the last size), the stages' dicts (``field``, ``map``,
+        ``quads``, ``planarization``) at that size, ``planarity`` (max, mean),
         ``map_recomputed``, ``V``, ``F`` of the refined triangle mesh and ``X``
-        the frame field on it (what :func:`write_html_viewer` draws with the quads).
+        the frame field on it (what :func:`write_html_viewer` draws with the quads);
+        ``deviation``: the largest distance of an input vertex or face centroid to
+        the extracted quads, in bounding-box diagonals; ``max_deviation``: the
+        bound it was held to (None: none); ``finer_sizes``: the (size, deviation)
+        of the sizes left for a finer one because the quads were too far;
+        ``unfilled_sizes``: the (size, folded) of those left because of
+        fold-overs (folded: a quad stayed folded); ``split_at``: the deviation
+        at the last size before its far components were split (None: none was).
     """
     V = np.asarray(V, dtype=np.float64)
     F = np.asarray(F)
@@ -471,19 +505,112 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
     if keep_trimmed_boundary and planarize:
         raise _refuse("quad_remesh: planarize takes quads only, and keep_trimmed_boundary keeps the border's "
                       "polygons: give one of them", "INVALID_PARAMETER")
-    # 1. the quad size
+    # 1. the quad size, and the bound on the distance of the input from the quads
     area, mean_edge = _area_and_mean_edge(V, F)
+    default_size = edge_length is None and quads is None
     if edge_length is not None:
-        h = float(edge_length)
+        h0 = float(edge_length)
     elif quads is not None:
-        h = math.sqrt(area / float(quads))
+        h0 = math.sqrt(area / float(quads))
     else:
-        h = min(mean_edge, math.sqrt(area / 1000.0))
-    if not (h > 0 and math.isfinite(h)):
+        h0 = min(mean_edge, math.sqrt(area / 1000.0))
+    if not (h0 > 0 and math.isfinite(h0)):
         raise _refuse("quad_remesh: no quad size (a mesh without area, or a non-positive edge_length / quads)")
+    if max_deviation is not None:
+        if isinstance(max_deviation, (bool, np.bool_)) or not isinstance(max_deviation, (int, float, np.number)):
+            raise _refuse("quad_remesh: max_deviation: expected a number, got %r" % (max_deviation,),
+                          "INVALID_PARAMETER")
+        max_deviation = float(max_deviation)
+        if not (max_deviation > 0 and math.isfinite(max_deviation)):
+            raise _refuse("quad_remesh: max_deviation must be a positive fraction of the bounding-box diagonal, "
+                          "got %r" % max_deviation, "INVALID_PARAMETER")
+    bounded = default_size or max_deviation is not None
+    bound = max_deviation if max_deviation is not None else _DEFAULT_MAX_DEVIATION
+    used = V[np.unique(F)]
+    diagonal = float(np.linalg.norm(used.max(axis=0) - used.min(axis=0)))
+    crease = float(sharp_edges) if sharp_edges is not None else 179.9
+    # 2.-6. at each size; with the default size, finer sizes as the program makes them
+    tries, unfilled, split_at = [], [], None
+    sizes_without_progress = 0
+    attempt = 0
+    while True:
+        h = h0 * _FINER_SIZE ** attempt
+        road = _quad_remesh_at_size(V, F, h, sharp_edges, crease, boundary_alignment, conjugate, b, bc,
+                                    curvature_constraints, singularity_separation, keep_trimmed_boundary)
+        may_refine = default_size and attempt < _FINER_SIZES and road["components"] == 1
+        if road["folded"] is not None:
+            if not may_refine:
+                raise road["folded"]
+            unfilled.append((h, True))
+            attempt += 1
+            continue
+        quad_info = road["quads"]
+        if may_refine and _unfilled_components(quad_info) > 0:
+            unfilled.append((h, False))
+            attempt += 1
+            continue
+        deviation = quad_info["largest_input_distance"] / diagonal
+        if bounded and deviation > bound:
+            closest = min([t[1] for t in tries], default=math.inf)
+            sizes_without_progress = 0 if deviation < 0.9 * closest else sizes_without_progress + 1
+            patience = 2 if road["components"] == 1 else 1
+            if default_size and attempt < _FINER_SIZES and sizes_without_progress < patience:
+                tries.append((h, deviation))
+                attempt += 1
+                continue
+            # the components farther than the bound split into quads on their triangles, from the same map
+            split_at = deviation
+            road["Vq"], road["Fq"], quad_info = quad_mesh(road["V"], road["F"], road["UV"], road["FUV"],
+                                                          road["map"]["seam_transitions"], keep_trimmed_boundary,
+                                                          split_components=True, max_input_distance=bound * diagonal)
+            road["quads"] = quad_info
+            deviation = quad_info["largest_input_distance"] / diagonal
+            if deviation > bound:  # not expected: the split components lie on the surface
+                raise _refuse("quad_remesh: an input point lies %g%% of the bounding-box diagonal from the quads, "
+                              "beyond the bound %g%%" % (100 * deviation, 100 * bound), "TOO_FAR_FROM_SURFACE")
+        break
+    V2, F2, X, Vq, Fq = road["V"], road["F"], road["X"], road["Vq"], road["Fq"]
+    # 7. planarization
+    planarization_info = None
+    if planarize:
+        threshold = 0.01 if planarize is True else float(planarize)
+        edges = np.unique(np.sort(np.concatenate([Fq[:, [k, (k + 1) % 4]] for k in range(4)]), axis=1), axis=0)
+        mean_quad_edge = np.linalg.norm(Vq[edges[:, 0]] - Vq[edges[:, 1]], axis=1).mean()
+        Vq, planarization_info = globals()["planarize"](Vq, Fq, V2, F2, threshold=threshold,
+                                                        max_distance_to_surface=max_surface_distance * mean_quad_edge,
+                                                        gauss_newton_steps=gauss_newton_steps,
+                                                        crease_angle=crease)
+    # the planarity of the quads (with keep_trimmed_boundary, of the faces with 4 corners)
+    quad_rows = Fq[(Fq[:, :4] >= 0).all(axis=1) & ((Fq[:, 4:] < 0).all(axis=1))][:, :4]
+    _, planarity = quad_planarity(Vq, quad_rows)
+    info = {
+        "quad_size": h, "V": V2, "F": F2, "X": X, "field": road["field"], "map": road["map"], "quads": quad_info,
+        "planarization": planarization_info, "planarity": planarity, "map_recomputed": road["map_recomputed"],
+        "deviation": deviation, "max_deviation": bound if bounded else None, "finer_sizes": tries,
+        "unfilled_sizes": unfilled, "split_at": split_at,
+    }
+    return Vq, Fq, info
+
+
+# With the default quad size, the quads are made finer by this factor (twice the
+# quads), at most _FINER_SIZES times, as the command-line program makes them.
+_FINER_SIZE = 1.0 / math.sqrt(2.0)
+_FINER_SIZES = 4
+_DEFAULT_MAX_DEVIATION = 0.009  # of the bounding-box diagonal
+
+
+def _unfilled_components(quad_info):
+    """The components split into quads because their fold-overs could not be filled."""
+    return (quad_info["split_components"] - quad_info["split_small_components"]
+            - quad_info["split_far_components"] - quad_info["split_defective_components"])
+
+
+def _quad_remesh_at_size(V, F, h, sharp_edges, crease, boundary_alignment, conjugate, b, bc,
+                         curvature_constraints, singularity_separation, keep_trimmed_boundary):
+    """Stages 2 to 6 of :func:`quad_remesh` at the quad size h: a dict of what they made. A quad folded
+    against the surface leaves "folded" set to the error (and no quads)."""
     # 2. features and refinement
     with_features = sharp_edges is not None or boundary_alignment
-    crease = float(sharp_edges) if sharp_edges is not None else 179.9
     minimum_crease = 3.0 * h
     if with_features:
         E = globals()["sharp_edges"](V, F, crease, boundary_alignment, minimum_crease)[0]
@@ -509,37 +636,27 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
     b2, bc2 = _merge_constraints(rows, 2)
     # 4. the frame field
     X, field_info = frame_field(V2, F2, b2, bc2, curvature_constraints=curvature_constraints, conjugate=conjugate)
-    # 5. the map, 6. the quads
+    # 5. the map, 6. the quads (a component whose fold-overs cannot be filled split into quads on its triangles)
     map_args = dict(edge_length=h, features=features, boundary_alignment=boundary_alignment,
                     singularity_cancellation_distance=singularity_separation * h)
     UV, FUV, map_info = integer_grid_map(V2, F2, X, **map_args)
-    recomputed = False
-    try:
-        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"], keep_trimmed_boundary)
-    except Error as e:
-        if e.code != "UNREPAIRABLE_FOLD_OVER" or map_info["flipped_faces"] != 0:
-            raise
-        UV, FUV, map_info = integer_grid_map(V2, F2, X, stiffening_keeps_integers=False, **map_args)
-        Vq, Fq, quad_info = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"], keep_trimmed_boundary)
-        recomputed = True
-    # 7. planarization
-    planarization_info = None
-    if planarize:
-        threshold = 0.01 if planarize is True else float(planarize)
-        edges = np.unique(np.sort(np.concatenate([Fq[:, [k, (k + 1) % 4]] for k in range(4)]), axis=1), axis=0)
-        mean_quad_edge = np.linalg.norm(Vq[edges[:, 0]] - Vq[edges[:, 1]], axis=1).mean()
-        Vq, planarization_info = globals()["planarize"](Vq, Fq, V2, F2, threshold=threshold,
-                                                        max_distance_to_surface=max_surface_distance * mean_quad_edge,
-                                                        gauss_newton_steps=gauss_newton_steps,
-                                                        crease_angle=crease)
-    # the planarity of the quads (with keep_trimmed_boundary, of the faces with 4 corners)
-    quad_rows = Fq[(Fq[:, :4] >= 0).all(axis=1) & ((Fq[:, 4:] < 0).all(axis=1))][:, :4]
-    _, planarity = quad_planarity(Vq, quad_rows)
-    info = {
-        "quad_size": h, "V": V2, "F": F2, "X": X, "field": field_info, "map": map_info, "quads": quad_info,
-        "planarization": planarization_info, "planarity": planarity, "map_recomputed": recomputed,
-    }
-    return Vq, Fq, info
+    road = {"V": V2, "F": F2, "X": X, "field": field_info, "components": field_info["components"],
+            "map_recomputed": False, "folded": None, "Vq": None, "Fq": None, "quads": None}
+    for retry in (False, True):
+        try:
+            road["Vq"], road["Fq"], road["quads"] = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"],
+                                                              keep_trimmed_boundary, split_components=True)
+            break
+        except Error as e:
+            if e.code == "FOLDED_QUAD":
+                road["folded"] = e
+                break
+            if retry or e.code != "UNREPAIRABLE_FOLD_OVER" or map_info["flipped_faces"] != 0:
+                raise
+            UV, FUV, map_info = integer_grid_map(V2, F2, X, stiffening_keeps_integers=False, **map_args)
+            road["map_recomputed"] = True
+    road.update({"UV": UV, "FUV": FUV, "map": map_info})
+    return road
 
 
 def _singularity_rows(singularities):

@@ -136,3 +136,122 @@ def test_planarize_crease_angle_holds_the_vertices_of_the_creases():
     assert info["status"] == "TOO_FAR_FROM_SURFACE"
     assert info["gauss_newton_max_distance_to_quads"] > info["max_distance_to_quads_before"] + bound
     assert np.array_equal(Vp, V)
+
+
+def point_triangle_distances(p, a, b, c):
+    """The distance of each point p[i] to the triangle (a[i], b[i], c[i]), by the closest-point
+    regions of a triangle (vertex, edge, face), computed here in numpy."""
+    ab, ac, ap = b - a, c - a, p - a
+    d1, d2 = (ab * ap).sum(-1), (ac * ap).sum(-1)
+    bp = p - b
+    d3, d4 = (ab * bp).sum(-1), (ac * bp).sum(-1)
+    cp = p - c
+    d5, d6 = (ab * cp).sum(-1), (ac * cp).sum(-1)
+    va, vb, vc = d3 * d6 - d5 * d4, d5 * d2 - d1 * d6, d1 * d4 - d3 * d2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        denominator = va + vb + vc
+        q = a + (vb / denominator)[:, None] * ab + (vc / denominator)[:, None] * ac  # inside the face
+        t_ab, t_ac = d1 / (d1 - d3), d2 / (d2 - d6)
+        t_bc = (d4 - d3) / ((d4 - d3) + (d5 - d6))
+    regions = [  # in order of precedence
+        (d1 <= 0) & (d2 <= 0), (d3 >= 0) & (d4 <= d3), (d6 >= 0) & (d5 <= d6),
+        (vc <= 0) & (d1 >= 0) & (d3 <= 0), (vb <= 0) & (d2 >= 0) & (d6 <= 0),
+        (va <= 0) & ((d4 - d3) >= 0) & ((d5 - d6) >= 0)]
+    choices = [a, b, c, a + t_ab[:, None] * ab, a + t_ac[:, None] * ac, b + t_bc[:, None] * (c - b)]
+    for region, point in reversed(list(zip(regions, choices))):
+        q = np.where(region[:, None], point, q)
+    return np.linalg.norm(q - p, axis=1)
+
+
+def distances_to_triangles(points, T):
+    """The distance of each point to the nearest of the triangles T (k, 3, 3). A grid of cells
+    of twice the median distance from a centroid to its triangle's corners lists each triangle
+    in every cell that its bounding sphere (around the centroid) meets; each point is measured
+    against the triangles listed in its cell and the 26 around it. Any other triangle is at
+    least one cell away, so a distance below that is the nearest; the few points without one
+    are measured against every triangle."""
+    centroid = T.mean(axis=1)
+    radius = np.linalg.norm(T - centroid[:, None, :], axis=2).max(axis=1)
+    cell = 2 * np.median(radius)
+    low = np.floor((centroid - radius[:, None]) / cell).astype(np.int64)
+    high = np.floor((centroid + radius[:, None]) / cell).astype(np.int64)
+    grid = {}
+    for t in range(len(T)):
+        for x in range(low[t, 0], high[t, 0] + 1):
+            for y in range(low[t, 1], high[t, 1] + 1):
+                for z in range(low[t, 2], high[t, 2] + 1):
+                    grid.setdefault((x, y, z), []).append(t)
+    around = [(x, y, z) for x in (-1, 0, 1) for y in (-1, 0, 1) for z in (-1, 0, 1)]
+    rows, columns = [], []
+    for i, key in enumerate(map(tuple, np.floor(points / cell).astype(np.int64))):
+        near = set()
+        for dx, dy, dz in around:
+            near.update(grid.get((key[0] + dx, key[1] + dy, key[2] + dz), ()))
+        rows.extend([i] * len(near))
+        columns.extend(near)
+    rows, columns = np.array(rows, dtype=np.int64), np.array(columns, dtype=np.int64)
+    out = np.full(len(points), np.inf)
+    d = point_triangle_distances(points[rows], T[columns, 0], T[columns, 1], T[columns, 2])
+    np.minimum.at(out, rows, d)
+    for i in np.nonzero(out > cell)[0]:
+        p = np.repeat(points[i][None, :], len(T), axis=0)
+        out[i] = point_triangle_distances(p, T[:, 0], T[:, 1], T[:, 2]).min()
+    return out
+
+
+def test_distances_to_triangles_against_known_points():
+    # the helper of the tests below: a point above the face, beside an edge, beyond a vertex
+    T = np.array([[[0.0, 0, 0], [1, 0, 0], [0, 1, 0]]])
+    points = np.array([[0.2, 0.2, 0.5], [0.5, -0.3, 0.4], [-1, -1, 0], [1, 1, 0], [2, 0, 0]])
+    expected = [0.5, 0.5, np.sqrt(2), np.sqrt(0.5), 1.0]
+    assert np.allclose(distances_to_triangles(points, T), expected, rtol=0, atol=1e-15)
+
+
+def quad_triangles(Vq, Fq):
+    # each quad cut along the diagonal from its first corner
+    return np.concatenate([Vq[Fq[:, [0, 1, 2]]], Vq[Fq[:, [0, 2, 3]]]])
+
+
+def test_quad_mesh_splits_the_components_farther_than_max_input_distance():
+    # bumpy's quads at 300 quads are far from its bumps; with a bound far below
+    # that distance, its one component is split into quads on its triangles
+    # (three per triangle), which lie on them.
+    V, F, _ = pvf.read_triangle_mesh(data_path("bumpy.off"))
+    X, _ = pvf.frame_field(V, F, curvature_constraints=0.02)
+    UV, FUV, minfo = pvf.integer_grid_map(V, F, X, quads=300)
+    Vq, Fq, info = pvf.quad_mesh(V, F, UV, FUV, minfo["seam_transitions"])
+    diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    points = np.concatenate([V, V[F].mean(axis=1)])
+    far = distances_to_triangles(points, quad_triangles(Vq, Fq)).max()
+    assert abs(info["largest_input_distance"] - far) <= 1e-9 * diagonal
+    assert far > 1e-3 * diagonal and info["split_components"] == 0
+
+    Vs, Fs, split = pvf.quad_mesh(V, F, UV, FUV, minfo["seam_transitions"], max_input_distance=1e-3 * diagonal)
+    assert split["split_components"] == 1 and split["split_far_components"] == 1
+    assert Fs.shape == (3 * len(F), 4)
+    assert distances_to_triangles(points, quad_triangles(Vs, Fs)).max() <= 1e-12 * diagonal
+    assert split["largest_input_distance"] <= 1e-12 * diagonal
+
+
+def test_quad_remesh_makes_the_default_size_finer_until_the_quads_follow_the_input():
+    # libigl's decimated knight (1000 faces): with the default quad size, its
+    # quads are 1.76% of the bounding-box diagonal away from it, then 2.21% at
+    # the next size; the search goes on past that size (one component) and
+    # ends within the default bound of 0.9%, as the command-line program does,
+    # without splitting the knight into quads on its triangles.
+    V, F, _ = pvf.read_triangle_mesh(data_path("decimated-knight.off"))
+    Vq, Fq, info = pvf.quad_remesh(V, F, curvature_constraints=0.01)
+    assert info["max_deviation"] == 0.009
+    assert len(info["finer_sizes"]) >= 2
+    assert all(deviation > 0.009 for _, deviation in info["finer_sizes"])
+    assert info["quad_size"] < min(h for h, _ in info["finer_sizes"] + info["unfilled_sizes"])
+    assert info["quads"]["split_components"] == 0 and info["split_at"] is None
+    # the bound, measured here: every vertex and face centroid of the refined
+    # knight (the surface the quads were made from) within 0.9% of the diagonal
+    diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    points = np.concatenate([info["V"], info["V"][info["F"]].mean(axis=1)])
+    distance = distances_to_triangles(points, quad_triangles(Vq, Fq)).max() / diagonal
+    assert distance <= 0.009 and abs(distance - info["deviation"]) <= 1e-9
+    # an explicit size has no bound unless given, and is not made finer
+    _, _, coarse = pvf.quad_remesh(V, F, edge_length=info["finer_sizes"][0][0], curvature_constraints=0.01)
+    assert coarse["max_deviation"] is None and coarse["finer_sizes"] == [] and coarse["deviation"] > 0.009

@@ -1245,6 +1245,10 @@ py::tuple quad_mesh(py::handle V, py::handle F, py::handle UV, py::handle FUV, p
                       std::to_string(max_input_distance) + " (INVALID_PARAMETER)",
                     "INVALID_PARAMETER");
   }
+  if(trimmed && (split || max_input_distance > 0))
+    throw Failure("quad_mesh: keep_trimmed_boundary keeps the border's polygons, which are not split: give it "
+                  "without split_components and max_input_distance (INVALID_PARAMETER)",
+                  "INVALID_PARAMETER");
   const Mesh_arrays a = read_mesh_arrays(V, F);
   const Matrix_d UVm = read_real(UV, "UV", 2);
   const Matrix_i FUVm = read_integer(FUV, "FUV", 3);

@@ -322,13 +322,14 @@ def quad_mesh(V, F, UV, FUV, seam_transitions=None, keep_trimmed_boundary=False,
     are kept too, as polygons bounded by the iso-lines and the border (a free
     border: the result covers the whole surface).
 
-    ``split_components``: a connected component whose fold-overs cannot be
-    filled, that has no whole cell (smaller than a quad), or whose quads are
-    not one quad mesh of it, gets its triangles split into quads (three per
-    triangle, through their centroids and edge midpoints), instead of the
-    call failing. ``max_input_distance`` (a distance in the units of ``V``):
-    a component with an input vertex or face centroid farther than this from
-    its quads gets its triangles split into quads too.
+    A connected component whose fold-overs cannot be filled gets its
+    triangles split into quads (three per triangle, through their centroids
+    and edge midpoints). ``split_components``: so does a component that has
+    no whole cell (smaller than a quad) or whose quads are not one quad mesh
+    of it, instead of the call failing. ``max_input_distance`` (a distance in
+    the units of ``V``): so does a component with an input vertex or face
+    centroid farther than this from its quads. Neither goes with
+    ``keep_trimmed_boundary``, whose border polygons are not split.
 
     Returns ``Vq`` (#Vq, 3), ``Fq`` and ``info`` (quads, irregular vertices,
     repairs, ``trimmed_polygons``, ``largest_input_distance``: the largest
@@ -433,7 +434,9 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
        because its fold-overs cannot be filled (stage 6); and while an input
        vertex or face centroid is farther from the quads than ``max_deviation``
        bounding-box diagonals (default 0.009 with the default size; with
-       ``edge_length`` or ``quads``, no bound unless given), until a size comes
+       ``edge_length`` or ``quads``, or with ``keep_trimmed_boundary``, whose
+       border polygons are not measured, no bound unless given, and it cannot
+       be given with ``keep_trimmed_boundary``), until a size comes
        no closer, by a tenth, than every size before (one such size ends the
        search, two in a row on a mesh of one component). At the last size, the
        components still farther than the bound get their triangles split into
@@ -451,7 +454,7 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
        iso-lines, singularities closer than ``singularity_separation`` quads cancelled);
     6. the quad mesh (:func:`quad_mesh`, with the map's exact transitions,
        components that it cannot follow split into quads on their triangles,
-       ``split_components=True``, as in the program); when
+       ``split_components=True`` unless ``keep_trimmed_boundary``, as in the program); when
        it reports ``UNREPAIRABLE_FOLD_OVER`` on a map without flipped
        triangles, the map is computed again with ``stiffening_keeps_integers=False``
        and the quads extracted from it; ``keep_trimmed_boundary`` is passed
@@ -521,10 +524,14 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
             raise _refuse("quad_remesh: max_deviation: expected a number, got %r" % (max_deviation,),
                           "INVALID_PARAMETER")
         max_deviation = float(max_deviation)
-        if not (max_deviation > 0 and math.isfinite(max_deviation)):
-            raise _refuse("quad_remesh: max_deviation must be a positive fraction of the bounding-box diagonal, "
+        if not (0 < max_deviation <= 1):
+            raise _refuse("quad_remesh: max_deviation must be a fraction of the bounding-box diagonal in (0, 1], "
                           "got %r" % max_deviation, "INVALID_PARAMETER")
-    bounded = default_size or max_deviation is not None
+        if keep_trimmed_boundary:
+            raise _refuse("quad_remesh: max_deviation is measured on whole quads, and keep_trimmed_boundary keeps "
+                          "the border's polygons: give one of them", "INVALID_PARAMETER")
+    # the border's polygons are not measured, nor split: with them, no bound
+    bounded = (default_size and not keep_trimmed_boundary) or max_deviation is not None
     bound = max_deviation if max_deviation is not None else _DEFAULT_MAX_DEVIATION
     used = V[np.unique(F)]
     diagonal = float(np.linalg.norm(used.max(axis=0) - used.min(axis=0)))
@@ -565,9 +572,10 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
                                                           split_components=True, max_input_distance=bound * diagonal)
             road["quads"] = quad_info
             deviation = quad_info["largest_input_distance"] / diagonal
-            if deviation > bound:  # not expected: the split components lie on the surface
-                raise _refuse("quad_remesh: an input point lies %g%% of the bounding-box diagonal from the quads, "
-                              "beyond the bound %g%%" % (100 * deviation, 100 * bound), "TOO_FAR_FROM_SURFACE")
+            if deviation > bound:  # not expected: the split components lie on their triangles
+                raise _refuse("quad_remesh: an input point lies %g%% of the bounding-box diagonal from the quads "
+                              "after the components farther than %g%% were split into quads on their triangles"
+                              % (100 * deviation, 100 * bound), "TOO_FAR_FROM_SURFACE")
         break
     V2, F2, X, Vq, Fq = road["V"], road["F"], road["X"], road["Vq"], road["Fq"]
     # 7. planarization
@@ -594,7 +602,7 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
 
 # With the default quad size, the quads are made finer by this factor (twice the
 # quads), at most _FINER_SIZES times, as the command-line program makes them.
-_FINER_SIZE = 1.0 / math.sqrt(2.0)
+_FINER_SIZE = 0.70710678118654752  # 1 / sqrt(2), the program's constant to the last bit
 _FINER_SIZES = 4
 _DEFAULT_MAX_DEVIATION = 0.009  # of the bounding-box diagonal
 
@@ -645,7 +653,8 @@ def _quad_remesh_at_size(V, F, h, sharp_edges, crease, boundary_alignment, conju
     for retry in (False, True):
         try:
             road["Vq"], road["Fq"], road["quads"] = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"],
-                                                              keep_trimmed_boundary, split_components=True)
+                                                              keep_trimmed_boundary,
+                                                              split_components=not keep_trimmed_boundary)
             break
         except Error as e:
             if e.code == "FOLDED_QUAD":

@@ -235,10 +235,10 @@ def test_quad_mesh_splits_the_components_farther_than_max_input_distance():
 
 def test_quad_remesh_makes_the_default_size_finer_until_the_quads_follow_the_input():
     # libigl's decimated knight (1000 faces): with the default quad size, its
-    # quads are 1.76% of the bounding-box diagonal away from it, then 2.21% at
-    # the next size; the search goes on past that size (one component) and
-    # ends within the default bound of 0.9%, as the command-line program does,
-    # without splitting the knight into quads on its triangles.
+    # quads are 1.56% of the bounding-box diagonal away from it, then 1.10%
+    # and 0.94% at the next two sizes; the search goes on, as the
+    # command-line program's does, and ends within the default bound of 0.9%
+    # (0.54%) without splitting the knight into quads on its triangles.
     V, F, _ = pvf.read_triangle_mesh(data_path("decimated-knight.off"))
     Vq, Fq, info = pvf.quad_remesh(V, F, curvature_constraints=0.01)
     assert info["max_deviation"] == 0.009

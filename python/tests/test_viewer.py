@@ -272,6 +272,11 @@ def test_quad_remesh_passes_keep_trimmed_boundary_on(inspired):
     assert info["planarity"]["max"] == planarity["max"] and info["planarity"]["faces"] == (corners == 4).sum()
     X = info["X"]
     assert X.shape == (len(info["F"]), 12)
+    # with the default size too, the border's polygons are kept; they are not
+    # measured against the input, so no deviation bound makes the size finer
+    _, Fd, default = pvf.quad_remesh(V, F, sharp_edges=None, boundary_alignment=False, keep_trimmed_boundary=True)
+    assert default["max_deviation"] is None and default["finer_sizes"] == [] and default["split_at"] is None
+    assert default["quads"]["trimmed_polygons"] > 0 and ((Fd >= 0).sum(axis=1) != 4).any()
     with pytest.raises(pvf.Error) as e:
         pvf.quad_remesh(V, F, quads=400, keep_trimmed_boundary=True, planarize=True)
     assert e.value.code == "INVALID_PARAMETER" and "keep_trimmed_boundary" in str(e.value)

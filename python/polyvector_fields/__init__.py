@@ -544,7 +544,8 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
         h = h0 * _FINER_SIZE ** attempt
         road = _quad_remesh_at_size(V, F, h, sharp_edges, crease, boundary_alignment, conjugate, b, bc,
                                     curvature_constraints, singularity_separation, keep_trimmed_boundary)
-        may_refine = default_size and attempt < _FINER_SIZES and road["components"] == 1
+        components = road["field"]["components"]
+        may_refine = default_size and attempt < _FINER_SIZES and components == 1
         if road["folded"] is not None:
             if not may_refine:
                 raise road["folded"]
@@ -560,7 +561,7 @@ def quad_remesh(V, F, quads=None, edge_length=None, sharp_edges=40.0, boundary_a
         if bounded and deviation > bound:
             closest = min([t[1] for t in tries], default=math.inf)
             sizes_without_progress = 0 if deviation < 0.9 * closest else sizes_without_progress + 1
-            patience = 2 if road["components"] == 1 else 1
+            patience = 2 if components == 1 else 1
             if default_size and attempt < _FINER_SIZES and sizes_without_progress < patience:
                 tries.append((h, deviation))
                 attempt += 1
@@ -648,8 +649,8 @@ def _quad_remesh_at_size(V, F, h, sharp_edges, crease, boundary_alignment, conju
     map_args = dict(edge_length=h, features=features, boundary_alignment=boundary_alignment,
                     singularity_cancellation_distance=singularity_separation * h)
     UV, FUV, map_info = integer_grid_map(V2, F2, X, **map_args)
-    road = {"V": V2, "F": F2, "X": X, "field": field_info, "components": field_info["components"],
-            "map_recomputed": False, "folded": None, "Vq": None, "Fq": None, "quads": None}
+    road = {"V": V2, "F": F2, "X": X, "field": field_info, "map_recomputed": False, "folded": None,
+            "Vq": None, "Fq": None, "quads": None}
     for retry in (False, True):
         try:
             road["Vq"], road["Fq"], road["quads"] = quad_mesh(V2, F2, UV, FUV, map_info["seam_transitions"],
